@@ -34,10 +34,10 @@ objects/%.o: %.cc
 # realtime objects (same sources may be built both ways)
 objects/rt/%.o: %.c
 	@mkdir -p $(@D)
-	$(CC) $(CFLAGS_ALL) -DRTAPI -fvisibility=hidden -c $< -o $@
+	$(CC) $(CFLAGS_ALL) -DRTAPI -c $< -o $@
 objects/rt/%.o: %.cc
 	@mkdir -p $(@D)
-	$(CXX) $(CXXFLAGS_ALL) -DRTAPI -fvisibility=hidden -c $< -o $@
+	$(CXX) $(CXXFLAGS_ALL) -DRTAPI -c $< -o $@
 
 uobjs = $(patsubst %.cc,objects/%.o,$(patsubst %.c,objects/%.o,$(1)))
 robjs = $(patsubst %.cc,objects/rt/%.o,$(patsubst %.c,objects/rt/%.o,$(1)))

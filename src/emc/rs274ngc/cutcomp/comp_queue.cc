@@ -1,0 +1,132 @@
+// comp_queue.cc: holding compensated moves and replaying them with deferred canon calls.
+#include "comp_queue.hh"
+
+namespace cutcomp {
+
+// XY works in (x, y) about z; XZ in (z, x) about y, matching ARC_FEED's axis order
+CompAxes comp_axes(CanonPlane p)
+{
+    CompAxes ax;
+    if (p == CANON_PLANE_XZ) {
+        ax.first = AX_Z;
+        ax.second = AX_X;
+        ax.perp = AX_Y;
+    }
+    ax.plane = p;
+    return ax;
+}
+
+// project a pose onto the plane
+Vec2 plane_point(const CompAxes &ax, const Pose &p)
+{
+    return {p[ax.first], p[ax.second]};
+}
+
+// replace the plane coordinates of a pose
+Pose with_plane_point(const CompAxes &ax, Pose p, Vec2 v)
+{
+    p[ax.first] = v.x;
+    p[ax.second] = v.y;
+    return p;
+}
+
+// append a deferred call
+void CompQueue::push_call(std::function<void(Canon &)> call)
+{
+    Entry e;
+    e.call = std::move(call);
+    q_.push_back(std::move(e));
+}
+
+// append a held move
+void CompQueue::push_move(const HeldMove &m)
+{
+    Entry e;
+    e.is_move = true;
+    e.move = m;
+    q_.push_back(std::move(e));
+    moves_++;
+}
+
+// newest move that travels in the plane
+HeldMove *CompQueue::last_plane_move()
+{
+    for (auto it = q_.rbegin(); it != q_.rend(); ++it)
+        if (it->is_move && it->move.in_plane)
+            return &it->move;
+    return nullptr;
+}
+
+// set the end of the last plane move and carry the perpendicular-only moves after it along
+void CompQueue::move_end(const CompAxes &ax, Vec2 v)
+{
+    bool after = false;
+    for (auto &e : q_) {
+        if (!e.is_move)
+            continue;
+        if (&e.move == last_plane_move())
+            after = true;
+        if (after) {
+            e.move.end = with_plane_point(ax, e.move.end, v);
+            if (!e.move.in_plane)
+                e.move.start = v;
+        }
+    }
+}
+
+// replay the queue
+void CompQueue::flush(Canon &out, const CompAxes &ax, Vec2 shift)
+{
+    while (!q_.empty()) {
+        Entry e = std::move(q_.front());
+        q_.pop_front();
+        if (e.is_move) {
+            moves_--;
+            emit_move(out, ax, e.move, shift);
+        } else {
+            e.call(out);
+        }
+    }
+}
+
+// forget everything held
+void CompQueue::clear()
+{
+    q_.clear();
+    moves_ = 0;
+}
+
+// canon pose of a 9-axis pose
+CanonPose to_canon_pose(const Pose &p)
+{
+    CanonPose c;
+    c.x = p[AX_X]; c.y = p[AX_Y]; c.z = p[AX_Z];
+    c.a = p[AX_A]; c.b = p[AX_B]; c.c = p[AX_C];
+    c.u = p[AX_U]; c.v = p[AX_V]; c.w = p[AX_W];
+    return c;
+}
+
+// write one move, applying the lathe tool-tip shift to end point and center
+void emit_move(Canon &out, const CompAxes &ax, const HeldMove &m, Vec2 shift)
+{
+    Pose end = m.end;
+    Vec2 c = m.center;
+    if (shift.x != 0) {
+        end[ax.first] += shift.x;
+        c.x += shift.x;
+    }
+    if (shift.y != 0) {
+        end[ax.second] += shift.y;
+        c.y += shift.y;
+    }
+    if (m.kind == HeldMove::TRAVERSE) {
+        out.straight_traverse(m.line, to_canon_pose(end));
+    } else if (m.kind == HeldMove::FEED) {
+        out.straight_feed(m.line, to_canon_pose(end));
+    } else {
+        out.arc_feed(m.line, end[ax.first], end[ax.second], c.x, c.y, m.rotation, end[ax.perp],
+                     end[AX_A], end[AX_B], end[AX_C], end[AX_U], end[AX_V], end[AX_W]);
+    }
+}
+
+}  // namespace cutcomp

@@ -1,0 +1,252 @@
+// interp.cc: interpreter life cycle: init, open, line loop, error capture, close and exit.
+#include <cmath>
+#include <fstream>
+
+#include "inifile.hh"
+#include "interp.hh"
+
+namespace {
+
+// strip trailing blanks and CR
+std::string rstrip(const std::string &s)
+{
+    size_t n = s.size();
+    while (n > 0 && (s[n - 1] == ' ' || s[n - 1] == '\t' || s[n - 1] == '\r' || s[n - 1] == '\n'))
+        n--;
+    return s.substr(0, n);
+}
+
+// true when the line is a lone '%' (blanks allowed)
+bool is_percent(const std::string &line)
+{
+    size_t i = line.find_first_not_of(" \t");
+    return i != std::string::npos && line[i] == '%' &&
+           line.find_first_not_of(" \t", i + 1) == std::string::npos;
+}
+
+} // namespace
+
+// Create an interpreter writing canon calls to out.
+Interp::Interp(Canon &out) : real_out_(out)
+{
+    if (cutcomp::make_engine) comp_ = cutcomp::make_engine(s_, out);
+    calls_.emplace_back();
+    s_.tools.resize(1);
+    s_.params[5599] = 1;
+}
+
+Interp::~Interp() = default;
+
+// The canon to call: the comp filter when present.
+Canon &Interp::out()
+{
+    return comp_ ? comp_->canon() : real_out_;
+}
+
+// Initialise the state from the canon and the parameter file; emits the init calls.
+void Interp::init()
+{
+    Canon &c = real_out_;
+    c.init_canon();
+    s_.machine_units = c.get_external_length_units() > 0.5 ? CANON_UNITS_MM : CANON_UNITS_INCHES;
+    s_.units = CANON_UNITS_MM;
+    double clear = s_.units == CANON_UNITS_MM ? 1.0 : 0.050;
+    s_.peck_clearance_g73 = s_.settings.g73_peck_clearance >= 0 ? s_.settings.g73_peck_clearance : clear;
+    s_.peck_clearance_g83 = s_.settings.g83_peck_clearance >= 0 ? s_.settings.g83_peck_clearance : clear;
+    s_.control_mode = c.get_external_motion_control_mode();
+    s_.tolerance = c.get_external_motion_control_tolerance();
+    s_.naivecam_tolerance = c.get_external_motion_control_naivecam_tolerance();
+    s_.feed_hold = c.get_external_feed_hold_enable();
+    s_.adaptive_feed = c.get_external_adaptive_feed_enable();
+    read_var_file();
+    s_.current_pocket = c.get_external_tool_slot();
+    s_.selected_pocket = c.get_external_selected_tool_slot();
+    c.use_length_units(s_.units);
+    int index = (int)s_.params[5220];
+    if (index < 1 || index > 9) index = 1;
+    s_.origin_index = index;
+    s_.params[5220] = index;
+    double k = s_.machine_to_program();
+    for (int i = 0; i < AX_COUNT; i++) {
+        s_.origin_offset[i] = s_.params[5201 + 20 * index + i] * k;
+        bool apply = s_.params[5210] == 1.0 && !s_.settings.disable_g92_persistence;
+        s_.axis_offset[i] = apply ? s_.params[5211 + i] * k : 0.0;
+    }
+    s_.rotation_xy = s_.params[5210 + 20 * index];
+    emit_g5x();
+    emit_g92();
+    c.set_xy_rotation(s_.rotation_xy);
+    c.set_feed_reference(CANON_XYZ);
+    CanonPose p = c.get_external_position();
+    s_.current = Pose{p.x, p.y, p.z, p.a, p.b, p.c, p.u, p.v, p.w};
+    write_var_file();
+}
+
+// Load a file into memory (nullptr when unreadable).
+std::shared_ptr<SourceFile> Interp::load_file(const std::string &path)
+{
+    std::ifstream in(path);
+    if (!in) return nullptr;
+    auto f = std::make_shared<SourceFile>();
+    f->path = path;
+    std::string line;
+    while (std::getline(in, line)) f->lines.push_back(rstrip(line));
+    for (const std::string &l : f->lines) {
+        if (l.find_first_not_of(" \t") == std::string::npos) continue;
+        f->percent = is_percent(l);
+        break;
+    }
+    return f;
+}
+
+// Open the main program.
+void Interp::open(const std::string &path)
+{
+    auto f = load_file(path);
+    if (!f) throw InterpError("Unable to open file <" + path + ">");
+    calls_.resize(1);
+    calls_[0] = CallFrame();
+    calls_[0].file = f;
+    s_.filename = path;
+    file_open_ = true;
+    skipping_ = false;
+    s_.line_text.clear();
+    real_out_.on_reset();
+}
+
+// Close the program file (ON_RESET unless lazy close).
+void Interp::close()
+{
+    if (comp_) comp_->reset();
+    file_open_ = false;
+    s_.line_text.clear();
+    if (!s_.settings.lazy_close) real_out_.on_reset();
+}
+
+// Interpreter exit: save parameters and reset the canon.
+void Interp::exit()
+{
+    write_var_file();
+    s_.line_text.clear();
+    real_out_.on_reset();
+}
+
+// Read and execute the next line of the open program.
+InterpStatus Interp::execute_next()
+{
+    CallFrame &f = calls_.back();
+    if (!f.file || f.pos >= f.file->lines.size()) {
+        s_.line_text.clear();
+        error_line_.clear();
+        bool pct = calls_[0].file && calls_[0].file->percent;
+        eof_error_ = true;
+        error_ = pct ? "File ended with no percent sign (%)"
+                     : "File ended with no percent sign (%) or program end (M2)";
+        return INTERP_ERROR;
+    }
+    s_.sequence_number = (int)f.pos + 1;
+    const std::string &line = f.file->lines[f.pos++];
+    if (is_percent(line) && f.file->percent && !skipping_) {
+        bool first = true;
+        for (size_t i = 0; i + 1 < f.pos; i++)
+            if (f.file->lines[i].find_first_not_of(" \t") != std::string::npos) first = false;
+        s_.line_text = line;
+        if (first) return INTERP_OK;
+        out().finish();
+        return INTERP_EXIT;
+    }
+    return run_line(line);
+}
+
+// Execute one MDI line.
+InterpStatus Interp::execute_line(const std::string &text)
+{
+    return run_line(rstrip(text));
+}
+
+// Parse and execute one line, turning errors into INTERP_ERROR.
+InterpStatus Interp::run_line(const std::string &raw)
+{
+    s_.line_text = raw;
+    eof_error_ = false;
+    try {
+        if (line_budget_ >= 0 && line_budget_-- == 0) throw InterpError("Line budget exhausted");
+        if (skipping_ && skip_fanuc_) {
+            fanuc_skip_done(raw);
+            return INTERP_OK;
+        }
+        if (skipping_) {
+            std::string name;
+            OKind kind;
+            if (!peek_oword(raw, name, kind) || !skip_match(name, kind)) return INTERP_OK;
+        }
+        Block b;
+        parse_line(raw, b);
+        if (b.block_delete && block_delete_) return INTERP_OK;
+        return execute_block(b);
+    } catch (const InterpError &e) {
+        error_ = e.what();
+        error_line_ = raw;
+        unwind_after_error();
+        return INTERP_ERROR;
+    }
+}
+
+// After an error: drop subroutine levels, skips and held comp moves.
+void Interp::unwind_after_error()
+{
+    while (calls_.size() > 1) pop_call();
+    skipping_ = false;
+    if (comp_) comp_->reset();
+    s_.comp_side = CANON_SIDE_OFF;
+    s_.comp_code = 400;
+}
+
+// Read the [RS274NGC] settings of an INI file.
+bool Interp::load_ini(const std::string &path)
+{
+    IniFile ini;
+    ini.SetQuiet(true);
+    if (!ini.Open(path)) return false;
+    ini_path_ = path;
+    InterpSettings &st = s_.settings;
+    st.ini_file = path;
+    st.lazy_close = true;
+    auto real = [&](const char *key, const char *sec, double def) {
+        auto v = ini.FindReal(key, sec);
+        return v ? *v : def;
+    };
+    auto flag = [&](const char *key, const char *sec, bool def) {
+        auto v = ini.FindInt(key, sec);
+        return v ? *v != 0 : def;
+    };
+    st.g73_peck_clearance = real("G73_PECK_CLEARANCE", "RS274NGC", -1);
+    st.g83_peck_clearance = real("G83_PECK_CLEARANCE", "RS274NGC", -1);
+    st.orient_offset = real("ORIENT_OFFSET", "RS274NGC", 0);
+    st.retain_g43 = flag("RETAIN_G43", "RS274NGC", false);
+    st.disable_g92_persistence = flag("DISABLE_G92_PERSISTENCE", "RS274NGC", false);
+    st.disable_auto_g54 = flag("DISABLE_AUTO_G54", "RS274NGC", false);
+    st.oword_narg = flag("OWORD_NARGS", "RS274NGC", false);
+    st.oword_warnonly = flag("OWORD_WARNONLY", "RS274NGC", false);
+    st.disable_fanuc_style_sub = flag("DISABLE_FANUC_STYLE_SUB", "RS274NGC", false);
+    st.ini_vars = flag("INI_VARS", "RS274NGC", true);
+    st.tool_change_quill_up = flag("TOOL_CHANGE_QUILL_UP", "EMCIO", false);
+    st.tool_change_at_g30 = flag("TOOL_CHANGE_AT_G30", "EMCIO", false);
+    st.tool_change_with_spindle_on = flag("TOOL_CHANGE_WITH_SPINDLE_ON", "EMCIO", false);
+    st.random_toolchanger = flag("RANDOM_TOOLCHANGER", "EMCIO", false);
+    auto units = ini.Find("LINEAR_UNITS", "TRAJ");
+    st.metric_machine = !units ? -1 : *units == "inch" ? 0 : 1;
+    if (auto v = ini.Find("PROGRAM_PREFIX", "DISPLAY")) st.program_prefix = IniFile::TildeExpand(*v);
+    if (auto v = ini.Find("WIZARD_ROOT", "WIZARD")) st.wizard_root = *v;
+    if (auto v = ini.Find("SUBROUTINE_PATH", "RS274NGC")) {
+        size_t start = 0;
+        while (start <= v->size() && st.subroutine_path.size() < 10) {
+            size_t colon = v->find(':', start);
+            if (colon == std::string::npos) colon = v->size();
+            st.subroutine_path.push_back(v->substr(start, colon - start));
+            start = colon + 1;
+        }
+    }
+    if (auto v = ini.Find("PARAMETER_FILE", "RS274NGC")) var_file_ = *v;
+    return true;
+}

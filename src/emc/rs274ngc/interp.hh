@@ -1,0 +1,263 @@
+// interp.hh: the RS274/NGC interpreter (reads lines, evaluates them, emits canon calls).
+#ifndef OPENEMC_RS274NGC_INTERP_HH
+#define OPENEMC_RS274NGC_INTERP_HH
+
+#include <initializer_list>
+#include <map>
+#include <set>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "block.hh"
+#include "canon.hh"
+#include "interp_hooks.hh"
+#include "interp_state.hh"
+
+// Result of executing one line.
+enum InterpStatus { INTERP_OK = 0, INTERP_EXIT = 1, INTERP_EXECUTE_FINISH = 2,
+                    INTERP_ENDFILE = 3, INTERP_ERROR = 4 };
+
+// A source file held in memory, one string per line.
+struct SourceFile {
+    std::string path;
+    std::vector<std::string> lines;
+    bool percent = false;          // first non-blank line is a lone '%'
+};
+
+// An active loop or conditional of the current call level.
+struct FlowFrame {
+    OKind kind;                    // O_WHILE, O_DO, O_REPEAT or O_IF
+    std::string name;
+    size_t start = 0;              // line index of the opening line
+    long count = 0;                // repeat count left
+    bool taken = false;            // an if/elseif branch already ran
+    long iterations = 0;           // loop passes so far (runaway guard)
+};
+
+// One subroutine call level.
+struct CallFrame {
+    std::shared_ptr<SourceFile> file;
+    size_t pos = 0;                // next line index to read
+    std::string sub_name;          // "" for the main program
+    double saved_args[31] = {};    // caller's #1..#30
+    std::map<std::string, double> locals;
+    std::vector<FlowFrame> flow;
+    size_t sub_line = 0;           // index of the sub / O<n> line
+    int return_line = 0;           // caller's line number
+    SavedModal saved;              // M70/M73 context of this level
+    bool autorestore = false;      // M73: restore on return
+    bool fanuc = false;            // M98 call (#1-#30 global)
+    long fanuc_count = 0;          // M98 L repeats left
+    long fanuc_iterations = 0;
+};
+
+// Location of a known subroutine.
+struct SubDef {
+    std::shared_ptr<SourceFile> file;
+    size_t line = 0;               // index of the "sub" line
+};
+
+// The interpreter.
+class Interp : public ProfileSource {
+public:
+    explicit Interp(Canon &out);
+    ~Interp() override;
+
+    // read [RS274NGC] and friends from an INI file; false if unloadable
+    bool load_ini(const std::string &path);
+    // set the .var file path
+    void set_var_file(const std::string &path) { var_file_ = path; }
+    // state access (tool table loading, tests)
+    InterpState &state() { return s_; }
+    // initialise: canon init calls, parameter file; throws InterpError
+    void init();
+    // open a program file (emits ON_RESET); throws InterpError
+    void open(const std::string &path);
+    // read and execute the next line of the open file
+    InterpStatus execute_next();
+    // execute one MDI line
+    InterpStatus execute_line(const std::string &text);
+    // close the file (ON_RESET unless lazy)
+    void close();
+    // interpreter exit: save parameters, ON_RESET
+    void exit();
+    // text of the last error
+    const std::string &error_text() const { return error_; }
+    // source line of the last error
+    const std::string &error_line() const { return error_line_; }
+    // current line text (for canon markers)
+    const std::string &line_text() const { return s_.line_text; }
+    // block delete switch (lines starting with '/' are skipped when on)
+    void set_block_delete(bool on) { block_delete_ = on; }
+    // true when the last error was the end of the file
+    bool at_end_of_file() const { return eof_error_; }
+    // stop with an error after this many executed lines (-1 = unlimited; fuzzing)
+    void set_line_budget(long lines) { line_budget_ = lines; }
+    // mark the process as task (#<_task> = 1)
+    void set_task(bool t) { task_ = t; }
+    // ProfileSource: evaluated blocks of a subroutine
+    std::vector<Block> sub_blocks(const std::string &name) override;
+
+    // --- parsing (parse.cc, expr.cc) ---
+    void parse_line(const std::string &raw, Block &b);
+    double eval_expression(const std::string &text, size_t &pos);
+    double read_real_value(const std::string &t, size_t &pos);
+    double read_number(const std::string &t, size_t &pos);
+    // parameters (params.cc)
+    double get_numbered(int n) const;
+    double get_named(const std::string &name);
+    bool named_exists(const std::string &name);
+    void set_named(const std::string &name, double v);
+    void check_numbered_writable(int n) const;
+    void check_named_writable(const std::string &name) const;
+
+private:
+    InterpStatus run_line(const std::string &raw);
+    InterpStatus execute_block(Block &b);
+    void unwind_after_error();
+    Canon &out();
+
+    // parse helpers (parse.cc, expr.cc, params.cc)
+    void parse_words(const std::string &t, size_t pos, Block &b);
+    void parse_word(char c, const std::string &t, size_t &pos, Block &b);
+    void parse_g(const std::string &t, size_t &pos, Block &b);
+    void parse_m(const std::string &t, size_t &pos, Block &b);
+    void parse_assignment(const std::string &t, size_t &pos, Block &b);
+    void parse_oword(const std::string &t, size_t &pos, Block &b);
+    std::string read_name(const std::string &t, size_t &pos);
+    double read_parameter(const std::string &t, size_t &pos);
+    double read_unary(const std::string &t, size_t &pos);
+    double eval_binary(double a, const std::string &op, double b);
+    std::string read_operator(const std::string &t, size_t &pos);
+
+    // control flow (oword.cc, fanuc.cc)
+    InterpStatus execute_oword(Block &b);
+    void o_call(Block &b);
+    void o_return(Block &b);
+    void o_sub(Block &b);
+    void o_if(Block &b);
+    void o_else(Block &b);
+    void o_endif(Block &b);
+    void o_while(Block &b);
+    void o_do(Block &b);
+    void o_repeat(Block &b);
+    void o_loop_end(Block &b);
+    void o_break(Block &b, bool cont);
+    void count_iteration(long &iterations, const std::string &name);
+    void skip_to(const std::string &name, std::initializer_list<OKind> kinds, bool past);
+    bool skip_match(const std::string &name, OKind kind);
+    bool peek_oword(const std::string &line, std::string &name, OKind &kind);
+    bool find_sub(const std::string &name, SubDef &def);
+    std::shared_ptr<SourceFile> load_file(const std::string &path);
+    void push_call(const SubDef &def, const std::string &name, const std::vector<double> &args,
+                   bool fanuc);
+    void pop_call();
+    InterpStatus fanuc_label(Block &b);
+    bool fanuc_skip_done(const std::string &line);
+    void fanuc_call(Block &b);
+    bool fanuc_return();
+    std::string flow_error(const std::string &what, const Block &b) const;
+
+    // execution steps (execute.cc, modal.cc, mcodes.cc, comments.cc, tools.cc)
+    void check_block(Block &b);
+    void check_words(Block &b);
+    void do_comment(Block &b);
+    std::string expand_text(const std::string &text);
+    std::string expand_param(const std::string &text, size_t &i, int decimals);
+    void do_spindle_mode(Block &b);
+    void do_feed_mode(Block &b);
+    void do_feed_rate(Block &b);
+    void do_speed(Block &b);
+    void do_select_tool(Block &b);
+    void do_io(Block &b);
+    void do_wait_input(Block &b);
+    bool do_tool_change(Block &b);
+    void do_spindle(Block &b);
+    void do_coolant(Block &b);
+    void do_overrides(Block &b);
+    void do_user_m(Block &b);
+    void do_dwell(Block &b);
+    void do_plane(Block &b);
+    void do_units(Block &b);
+    void do_lathe_mode(Block &b);
+    void do_comp(Block &b);
+    void do_tool_length(Block &b);
+    void do_coord_system(Block &b);
+    void do_path_control(Block &b);
+    void do_distance(Block &b);
+    void do_retract(Block &b);
+    void do_nonmodal(Block &b);
+    void do_g92_family(Block &b);
+    bool do_motion(Block &b);
+    InterpStatus do_stop(Block &b);
+
+    // motion helpers (motion.cc, arcs.cc)
+    Pose find_end(const Block &b);
+    void polar_end(const Block &b, Pose &end);
+    double straight_length(const Pose &a, const Pose &e) const;
+    void move_straight(const Block &b, int mode);
+    void move_arc(const Block &b, int mode);
+    void arc_center_r(const Block &b, double s1, double s2, double e1, double e2, int mode,
+                      double &c1, double &c2);
+    void arc_center_ijk(const Block &b, double s1, double s2, double e1, double e2, double &c1,
+                        double &c2);
+    double arc_length(double s1, double s2, double e1, double e2, double c1, double c2,
+                      int rotation, double axial) const;
+    void move_probe(const Block &b);
+    void probe_result();
+    void move_g33(const Block &b, bool rigid);
+    void move_home(const Block &b, int code);
+    void store_home(int code);
+    void move_cycle(Block &b);
+    void apply_inverse_time(double length, const Block &b);
+    CanonPose canon_pose(const Pose &p) const;
+    Pose machine_to_program_pose(const Pose &m) const;
+    Pose program_to_machine_pose(const Pose &p) const;
+
+    // offsets and tools (offsets.cc, tools.cc, modal_save.cc)
+    void g10(const Block &b);
+    void g10_l2(const Block &b, int l);
+    void g10_tool(const Block &b, int l);
+    void set_origin_index(int index);
+    void emit_g5x();
+    void emit_g92();
+    void g92_family(int code, const Block &b);
+    void apply_tlo(const Pose &tlo);
+    void convert_units(CanonUnits to);
+    int find_tool_index(int toolno) const;
+    void m2_reset(int code);
+    void modal_save(bool autorestore);
+    void modal_restore(const SavedModal &m);
+    void restore_coolant(const SavedModal &m, bool first);
+
+    // parameter file (varfile.cc) and predefined parameters (predef.cc)
+    void read_var_file();
+    void write_var_file();
+    bool predefined(const std::string &name, double &v);
+
+    InterpState s_;
+    Canon &real_out_;
+    std::unique_ptr<cutcomp::Engine> comp_;
+    std::string var_file_ = "/etc/emc2/sample-configs/sim/sim.var";
+    std::set<int> in_var_file_;
+    std::vector<CallFrame> calls_;
+    std::map<std::string, SubDef> subs_;
+    std::map<std::string, double> globals_;
+    std::map<std::string, double> ini_cache_;
+    std::string error_, error_line_;
+    bool skipping_ = false;
+    std::string skip_name_;
+    std::vector<OKind> skip_kinds_;
+    bool skip_past_ = false, skip_sub_ = false, skip_fanuc_ = false;
+    int skip_start_ = 0;
+    bool block_delete_ = false;
+    bool task_ = false;
+    bool file_open_ = false;
+    bool eof_error_ = false;
+    double value_ = 0, value_returned_ = 0;
+    long line_budget_ = -1;
+    std::string ini_path_;
+};
+
+#endif

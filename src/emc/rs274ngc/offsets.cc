@@ -1,0 +1,165 @@
+// offsets.cc: work offsets (G10 L2/L20, G54..), G52/G92 family and program<->machine conversion.
+#include <cmath>
+
+#include "interp.hh"
+
+namespace {
+
+constexpr double DEG = M_PI / 180.0;
+const char AXES[] = "xyzabcuvw";
+
+// true for the rotary axes, whose values are never unit-converted
+bool rotary(int i) { return i >= AX_A && i <= AX_C; }
+
+} // namespace
+
+// A state pose as a canon pose.
+CanonPose Interp::canon_pose(const Pose &p) const
+{
+    return CanonPose{p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8]};
+}
+
+// machine = Rot(R)(program + g92) + g5x + tlo, all in program units.
+Pose Interp::program_to_machine_pose(const Pose &p) const
+{
+    Pose m;
+    for (int i = 0; i < AX_COUNT; i++) m[i] = p[i] + s_.axis_offset[i];
+    if (s_.rotation_xy != 0.0) {
+        double c = std::cos(s_.rotation_xy * DEG), sn = std::sin(s_.rotation_xy * DEG);
+        double x = m[0] * c - m[1] * sn, y = m[0] * sn + m[1] * c;
+        m[0] = x;
+        m[1] = y;
+    }
+    for (int i = 0; i < AX_COUNT; i++) m[i] += s_.origin_offset[i] + s_.tool_offset[i];
+    return m;
+}
+
+// Inverse of program_to_machine_pose.
+Pose Interp::machine_to_program_pose(const Pose &m) const
+{
+    Pose p;
+    for (int i = 0; i < AX_COUNT; i++) p[i] = m[i] - s_.origin_offset[i] - s_.tool_offset[i];
+    if (s_.rotation_xy != 0.0) {
+        double c = std::cos(-s_.rotation_xy * DEG), sn = std::sin(-s_.rotation_xy * DEG);
+        double x = p[0] * c - p[1] * sn, y = p[0] * sn + p[1] * c;
+        p[0] = x;
+        p[1] = y;
+    }
+    for (int i = 0; i < AX_COUNT; i++) p[i] -= s_.axis_offset[i];
+    return p;
+}
+
+// Emit SET_G5X_OFFSET for the active system.
+void Interp::emit_g5x()
+{
+    out().set_g5x_offset(s_.origin_index, canon_pose(s_.origin_offset));
+}
+
+// Emit SET_G92_OFFSET.
+void Interp::emit_g92()
+{
+    out().set_g92_offset(canon_pose(s_.axis_offset));
+}
+
+// Make system index (1..9) active, keeping the machine position.
+void Interp::set_origin_index(int index)
+{
+    Pose m = program_to_machine_pose(s_.current);
+    double k = s_.machine_to_program();
+    s_.origin_index = index;
+    s_.params[5220] = index;
+    for (int i = 0; i < AX_COUNT; i++)
+        s_.origin_offset[i] = s_.params[5201 + 20 * index + i] * (rotary(i) ? 1.0 : k);
+    s_.rotation_xy = s_.params[5210 + 20 * index];
+    s_.current = machine_to_program_pose(m);
+}
+
+// Group 0 codes except motion-like ones (step 26).
+void Interp::do_nonmodal(Block &b)
+{
+    int g = b.g_modes[GG_NONMODAL];
+    if (g == 100) g10(b);
+    if (g == 520 || g == 920) g92_family(g, b);
+}
+
+// G92.1/.2/.3 (step 27).
+void Interp::do_g92_family(Block &b)
+{
+    int g = b.g_modes[GG_G92];
+    if (g != -1) g92_family(g, b);
+}
+
+// G52, G92, G92.1, G92.2, G92.3.
+void Interp::g92_family(int code, const Block &b)
+{
+    if (s_.comp_side != CANON_SIDE_OFF)
+        throw InterpError("Cannot change axis offsets with cutter radius comp");
+    double k = s_.machine_to_program();
+    Pose m = program_to_machine_pose(s_.current);
+    if (code == 520 || code == 920) {
+        bool any = false;
+        for (int i = 0; i < 6; i++) any = any || b.word(AXES[i]);
+        if (!any) throw InterpError("All axes missing with g52 or g92");
+        for (int i = 0; i < 6; i++) {
+            if (!b.word(AXES[i])) continue;
+            double v = b.value(AXES[i]);
+            if (i == AX_X && s_.lathe_diameter) v /= 2.0;
+            s_.axis_offset[i] = code == 520 ? v : s_.current[i] + s_.axis_offset[i] - v;
+        }
+        s_.params[5210] = 1;
+    } else if (code == 921 || code == 922) {
+        s_.axis_offset = Pose{};
+        s_.params[5210] = 0;
+    } else {
+        for (int i = 0; i < AX_COUNT; i++)
+            s_.axis_offset[i] = s_.params[5211 + i] * (rotary(i) ? 1.0 : k);
+        s_.params[5210] = 1;
+    }
+    if (code != 922)
+        for (int i = 0; i < AX_COUNT; i++)
+            s_.params[5211 + i] = s_.axis_offset[i] / (rotary(i) ? 1.0 : k);
+    s_.current = machine_to_program_pose(m);
+    emit_g92();
+}
+
+// G10: dispatch on L.
+void Interp::g10(const Block &b)
+{
+    int l = b.word('l') ? (int)b.value('l') : -1;
+    if (l == 2 || l == 20) return g10_l2(b, l);
+    if (l == 0 || l == 1 || l == 10 || l == 11) return g10_tool(b, l);
+    throw InterpError("Line with G10 does not have L0, L1, L10, L11, L2, or L20");
+}
+
+// G10 L2/L20: set a work offset (and rotation).
+void Interp::g10_l2(const Block &b, int l)
+{
+    if (!b.word('p')) throw InterpError("P word missing with G10 L2");
+    double pv = b.value('p');
+    int p = (int)std::nearbyint(pv);
+    if (std::fabs(pv - p) > 0.0001 || p < 0 || p > 9)
+        throw InterpError("P value out of range (0-9) with G10 L2");
+    if (s_.comp_side != CANON_SIDE_OFF)
+        throw InterpError("Cannot change coordinate systems with cutter radius compensation on");
+    int index = p == 0 ? s_.origin_index : p;
+    double k = s_.machine_to_program();
+    Pose m = program_to_machine_pose(s_.current);
+    for (int i = 0; i < 6; i++) {
+        if (!b.word(AXES[i])) continue;
+        double v = b.value(AXES[i]);
+        if (i == AX_X && s_.lathe_diameter) v /= 2.0;
+        if (l == 20) v = m[i] - s_.tool_offset[i] - s_.axis_offset[i] - v;
+        s_.params[5201 + 20 * index + i] = v / (rotary(i) ? 1.0 : k);
+    }
+    if (b.word('r')) s_.params[5210 + 20 * index] = b.value('r');
+    if (index != s_.origin_index) {
+        out().comment("interpreter: setting coordinate system origin");
+        return;
+    }
+    for (int i = 0; i < AX_COUNT; i++)
+        s_.origin_offset[i] = s_.params[5201 + 20 * index + i] * (rotary(i) ? 1.0 : k);
+    s_.rotation_xy = s_.params[5210 + 20 * index];
+    s_.current = machine_to_program_pose(m);
+    emit_g5x();
+    out().set_xy_rotation(s_.rotation_xy);
+}

@@ -1,0 +1,294 @@
+// parse.cc: turns one source line into an evaluated Block (gcode.md §1, §2).
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+
+#include "interp.hh"
+
+namespace {
+
+constexpr size_t MAX_LINE = 253;
+
+// Lower-case the line and drop blanks outside comments; ';' ends it. Comments keep their case.
+std::string normalize(const std::string &raw)
+{
+    if (raw.size() >= MAX_LINE) throw InterpError("Command too long");
+    std::string t;
+    t.reserve(raw.size());
+    for (size_t i = 0; i < raw.size(); i++) {
+        char c = raw[i];
+        if (c == ';') break;
+        if (c == ' ' || c == '\t' || c == '\r' || c == '\n') continue;
+        if (c != '(') {
+            t += (char)tolower((unsigned char)c);
+            continue;
+        }
+        size_t j = i + 1;
+        for (; j < raw.size() && raw[j] != ')'; j++)
+            if (raw[j] == '(') throw InterpError("Nested comment found");
+        if (j >= raw.size()) throw InterpError("Unclosed comment found");
+        t.append(raw, i, j - i + 1);
+        i = j;
+    }
+    return t;
+}
+
+// modal group of a G code ×10, -1 if unknown
+int g_group(int g)
+{
+    static const struct { int group; int codes[24]; } table[] = {
+        {GG_NONMODAL, {40, 100, 280, 281, 300, 301, 520, 530, 920, -1}},
+        {GG_MOTION, {0, 10, 20, 30, 50, 51, 330, 331, 382, 383, 384, 385, 700, 710, 711, 712,
+                     720, 721, 722, 730, 740, 760, 800, -1}},
+        {GG_PLANE, {170, 180, 190, 171, 181, 191, -1}},
+        {GG_DISTANCE, {900, 910, -1}},
+        {GG_IJK, {901, 911, -1}},
+        {GG_FEED, {930, 940, 950, -1}},
+        {GG_UNITS, {200, 210, -1}},
+        {GG_COMP, {400, 410, 411, 420, 421, -1}},
+        {GG_TOOL_LENGTH, {430, 431, 432, 490, -1}},
+        {GG_RETRACT, {980, 990, -1}},
+        {GG_COORD, {540, 550, 560, 570, 580, 590, 591, 592, 593, -1}},
+        {GG_PATH, {610, 611, 640, -1}},
+        {GG_SPINDLE, {960, 970, -1}},
+        {GG_LATHE, {70, 80, -1}},
+        {GG_G92, {921, 922, 923, -1}},
+    };
+    if (g >= 810 && g <= 890 && g % 10 == 0) return GG_MOTION;
+    for (const auto &row : table)
+        for (int i = 0; row.codes[i] != -1; i++)
+            if (row.codes[i] == g) return row.group;
+    return -1;
+}
+
+// modal group of an M code, -1 if unknown
+int m_group(int m)
+{
+    if (m >= 100 && m <= 199) return MG_USER;
+    switch (m) {
+    case 0: case 1: case 2: case 30: case 60: case 99: return MG_STOP;
+    case 62: case 63: case 64: case 65: case 66: case 67: case 68: return MG_IO;
+    case 6: case 61: return MG_TOOL;
+    case 3: case 4: case 5: case 19: case 70: case 71: case 72: case 73: return MG_SPINDLE;
+    case 7: case 8: case 9: return MG_COOLANT;
+    case 48: case 49: case 50: case 51: case 52: case 53: return MG_OVERRIDE;
+    default: return -1;
+    }
+}
+
+// integer within 0.0001 of v, else error
+int to_int(double v)
+{
+    double r = std::nearbyint(v);
+    if (std::fabs(v - r) > 0.0001 || std::fabs(r) > 2e9)
+        throw InterpError("Non integer value for integer");
+    return (int)r;
+}
+
+// map an O-word keyword to its kind
+OKind okind(const std::string &k)
+{
+    static const struct { const char *name; OKind kind; } table[] = {
+        {"sub", O_SUB}, {"endsub", O_ENDSUB}, {"call", O_CALL}, {"return", O_RETURN},
+        {"if", O_IF}, {"elseif", O_ELSEIF}, {"else", O_ELSE}, {"endif", O_ENDIF},
+        {"while", O_WHILE}, {"endwhile", O_ENDWHILE}, {"do", O_DO}, {"break", O_BREAK},
+        {"continue", O_CONTINUE}, {"repeat", O_REPEAT}, {"endrepeat", O_ENDREPEAT},
+    };
+    for (const auto &e : table)
+        if (k == e.name) return e.kind;
+    return O_NONE;
+}
+
+} // namespace
+
+// Parse a raw line into b (expressions evaluated with the current parameter values).
+void Interp::parse_line(const std::string &raw, Block &b)
+{
+    std::string t = normalize(raw);
+    size_t pos = 0;
+    if (pos < t.size() && t[pos] == '/') {
+        b.block_delete = true;
+        pos++;
+    }
+    if (pos < t.size() && t[pos] == 'n') {
+        pos++;
+        size_t start = pos;
+        while (pos < t.size() && isdigit((unsigned char)t[pos])) pos++;
+        if (pos == start) throw InterpError("Bad format unsigned integer");
+        if (pos < t.size() && t[pos] == '.') {
+            pos++;
+            while (pos < t.size() && isdigit((unsigned char)t[pos])) pos++;
+        }
+        b.has_line_number = true;
+        b.line_number = atof(t.c_str() + start);
+    }
+    parse_words(t, pos, b);
+}
+
+// Parse everything after the line number.
+void Interp::parse_words(const std::string &t, size_t pos, Block &b)
+{
+    bool words = false;
+    while (pos < t.size()) {
+        char c = t[pos];
+        if (c == '(') {
+            size_t end = t.find(')', pos);
+            b.comment = t.substr(pos + 1, end - pos - 1);
+            b.has_comment = true;
+            pos = end + 1;
+        } else if (c == 'o') {
+            if (words || b.o_kind != O_NONE || b.o_fanuc)
+                throw InterpError("Unexpected character after O-word");
+            parse_oword(t, pos, b);
+        } else if (b.o_kind != O_NONE || b.o_fanuc) {
+            throw InterpError("Unexpected character after O-word");
+        } else if (c == '#') {
+            parse_assignment(t, pos, b);
+            words = true;
+        } else {
+            parse_word(c, t, pos, b);
+            words = true;
+        }
+    }
+}
+
+// Parse "#n=value" or "#<name>=value".
+void Interp::parse_assignment(const std::string &t, size_t &pos, Block &b)
+{
+    pos++;
+    std::string name;
+    int index = 0;
+    if (pos < t.size() && t[pos] == '<') {
+        name = read_name(t, pos);
+    } else {
+        index = to_int(read_real_value(t, pos));
+        if (index < 1 || index >= PARAM_COUNT) throw InterpError("Parameter number out of range");
+    }
+    if (pos >= t.size() || t[pos] != '=')
+        throw InterpError("Equal sign missing in parameter setting");
+    pos++;
+    double v = read_real_value(t, pos);
+    if (name.empty()) {
+        check_numbered_writable(index);
+        b.num_assign.emplace_back(index, v);
+    } else {
+        check_named_writable(name);
+        b.named_assign.emplace_back(name, v);
+    }
+}
+
+// Parse one letter word (or @ ^ $) at pos.
+void Interp::parse_word(char c, const std::string &t, size_t &pos, Block &b)
+{
+    if (c == 'g') { parse_g(t, pos, b); return; }
+    if (c == 'm') { parse_m(t, pos, b); return; }
+    bool special = c == '@' || c == '^' || c == '$';
+    bool letter = c >= 'a' && c <= 'z' && c != 'n' && c != 'o' && c != 'u' && c != 'v' &&
+                  c != 'w';
+    if (!special && !letter)
+        throw InterpError(std::string("Bad character '") + c + "' used");
+    pos++;
+    bool &have = c == '@' ? b.has_polar_radius : c == '^' ? b.has_polar_angle
+                 : c == '$' ? b.has_dollar : b.has[c - 'a'];
+    if (have) throw InterpError(std::string("Multiple ") + c + " words on one line");
+    double v = read_real_value(t, pos);
+    have = true;
+    if (c == '@') { b.polar_radius = v; return; }
+    if (c == '^') { b.polar_angle = v; return; }
+    if (c == '$') { b.dollar = to_int(v); return; }
+    if (c == 'l' || c == 't' || c == 'h') v = to_int(v);
+    if (c == 'f' && v < 0) throw InterpError("Negative f word used");
+    if (c == 's' && v < 0) throw InterpError("Negative spindle speed used");
+    if (c == 't' && v < 0) throw InterpError("Negative tool id used");
+    if (c == 'l' && v < 0) throw InterpError("Negative l word used");
+    if (c == 'h' && v < 0) throw InterpError("Negative h word tool length offset used");
+    b.val[c - 'a'] = v;
+}
+
+// Parse a G word and file it in its modal group.
+void Interp::parse_g(const std::string &t, size_t &pos, Block &b)
+{
+    pos++;
+    double v = read_real_value(t, pos);
+    if (v < 0) throw InterpError("Negative g code used");
+    double tenths = v * 10.0;
+    double code = std::nearbyint(tenths);
+    if (std::fabs(tenths - code) > 0.001 || code > 999) throw InterpError("G-code out of range");
+    int g = (int)code;
+    int group = g_group(g);
+    if (group < 0) throw InterpError("Unknown g code used");
+    int &slot = b.g_modes[group];
+    if (slot != -1 && group == GG_MOTION && (slot == 800 || g == 800)) {
+        b.g80_dropped = true;
+        if (slot == 800) slot = g;
+        return;
+    }
+    if (slot != -1) throw InterpError("Two g codes used from same modal group");
+    slot = g;
+}
+
+// Parse an M word and file it in its modal group.
+void Interp::parse_m(const std::string &t, size_t &pos, Block &b)
+{
+    pos++;
+    int m = to_int(read_real_value(t, pos));
+    if (m < 0) throw InterpError("Negative m code used");
+    if (m > 199) throw InterpError("M-code greater than 199: M" + std::to_string(m));
+    if (b.m_count >= 4) throw InterpError("Too many m codes on line");
+    if (m == 98) {
+        if (b.m98) throw InterpError("Two m codes used from same modal group");
+        b.m98 = true;
+        b.m_count++;
+        return;
+    }
+    int group = m_group(m);
+    if (group < 0) throw InterpError("Unknown m code used: M" + std::to_string(m));
+    if (b.m_modes[group] != -1) throw InterpError("Two m codes used from same modal group");
+    b.m_modes[group] = m;
+    b.m_count++;
+}
+
+// Parse "o<name>|oN|o[expr] keyword [args]".
+void Interp::parse_oword(const std::string &t, size_t &pos, Block &b)
+{
+    pos++;
+    if (pos < t.size() && t[pos] == '<') {
+        b.o_name = read_name(t, pos);
+    } else {
+        double v = read_real_value(t, pos);
+        char buf[32];
+        snprintf(buf, sizeof buf, "%d", to_int(v));
+        b.o_name = buf;
+    }
+    size_t start = pos;
+    while (pos < t.size() && t[pos] >= 'a' && t[pos] <= 'z') pos++;
+    std::string key = t.substr(start, pos - start);
+    if (key.empty()) {
+        b.o_fanuc = true;
+        return;
+    }
+    b.o_kind = okind(key);
+    if (b.o_kind == O_NONE) throw InterpError("Unknown word where unary operation could be");
+    bool takes_expr = b.o_kind == O_IF || b.o_kind == O_ELSEIF || b.o_kind == O_WHILE ||
+                      b.o_kind == O_RETURN || b.o_kind == O_ENDSUB || b.o_kind == O_REPEAT;
+    while (pos < t.size() && (t[pos] == '[' || t[pos] == '(')) {
+        if (t[pos] == '(') {
+            size_t end = t.find(')', pos);
+            b.comment = t.substr(pos + 1, end - pos - 1);
+            b.has_comment = true;
+            pos = end + 1;
+            continue;
+        }
+        double v = eval_expression(t, pos);
+        if (b.o_kind == O_CALL) {
+            if (b.o_args.size() >= 30) throw InterpError("Too many arguments to subroutine call");
+            b.o_args.push_back(v);
+        } else if (takes_expr && !b.o_has_expr) {
+            b.o_has_expr = true;
+            b.o_value = v;
+        } else {
+            throw InterpError("Unexpected character after O-word");
+        }
+    }
+}

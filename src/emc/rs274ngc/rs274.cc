@@ -1,0 +1,212 @@
+// rs274.cc: the standalone interpreter program: runs a G-code file and prints canon calls (canon.md §3).
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <getopt.h>
+#include <string>
+#include <unistd.h>
+
+#include "inifile.hh"
+#include "interp.hh"
+#include "sai_canon.hh"
+#include "tooltable.hh"
+
+namespace {
+
+// Options of one run.
+struct Options {
+    std::string tool_file, var_file, ini_file, input, output;
+    bool tool_given = false;
+    int on_error = 2;
+    bool block_delete = false, go = false, task = false, stack = false;
+};
+
+// print usage and exit 1
+[[noreturn]] void usage(const char *prog)
+{
+    fprintf(stderr,
+            "Usage: %s [-p interp.so] [-t tool.tbl] [-v var-file.var] [-n 0|1|2]\n"
+            "          [-b] [-s] [-g] [-i ini-file] [-T] [-l log_level] [input file [output file]]\n"
+            "\n"
+            "    -p: Specify the pluggable interpreter to use\n"
+            "    -t: Specify the .tbl (tool table) file to use\n"
+            "    -v: Specify the .var (parameter) file to use\n"
+            "    -n: Specify the continue mode:\n"
+            "           0: continue\n"
+            "           1: enter MDI mode\n"
+            "           2: stop (default)\n"
+            "    -b: Toggle the 'block delete' flag (default: OFF)\n"
+            "    -s: Toggle the 'print stack' flag (default: OFF)\n"
+            "    -g: Toggle the 'go (batch mode)' flag (default: OFF)\n"
+            "    -i: specify the .ini file (default: no ini file)\n"
+            "    -T: call task_init()\n"
+            "    -l: specify the log_level (default: -1)\n",
+            prog);
+    exit(1);
+}
+
+// directory of this executable's parent (the build tree root)
+std::string tree_root()
+{
+    char buf[4096];
+    ssize_t n = readlink("/proc/self/exe", buf, sizeof buf - 1);
+    if (n <= 0) return ".";
+    buf[n] = 0;
+    std::string p = buf;
+    p = p.substr(0, p.rfind('/'));
+    return p.substr(0, p.rfind('/'));
+}
+
+// parse the command line; tool tables are read here (as LinuxCNC's rs274 does)
+void parse_options(int argc, char **argv, Options &o, std::vector<CanonTool> &tools)
+{
+    int c;
+    while ((c = getopt(argc, argv, "p:t:v:n:bsgi:Tl:")) != -1) {
+        std::string err;
+        switch (c) {
+        case 'p': fprintf(stderr, "pluggable interpreters are not supported: %s\n", optarg); exit(1);
+        case 't':
+            o.tool_given = true;
+            if (!load_tool_table(optarg, tools, err)) fprintf(stderr, "%s\n", err.c_str());
+            break;
+        case 'v': o.var_file = optarg; break;
+        case 'n':
+            o.on_error = atoi(optarg);
+            if (o.on_error < 0 || o.on_error > 2) usage(argv[0]);
+            break;
+        case 'b': o.block_delete = !o.block_delete; break;
+        case 's': o.stack = !o.stack; break;
+        case 'g': o.go = !o.go; break;
+        case 'i': o.ini_file = optarg; break;
+        case 'T': o.task = true; break;
+        case 'l': break;
+        default: usage(argv[0]);
+        }
+    }
+    int rest = argc - optind;
+    if (rest > 2) usage(argv[0]);
+    if (rest >= 1) o.input = argv[optind];
+    if (rest == 2) o.output = argv[optind + 1];
+}
+
+// report an interpreter error: text, then the source line
+void report(Interp &in)
+{
+    fflush(stdout);
+    fprintf(stderr, "%s\n%s\n", in.error_text().c_str(), in.error_line().c_str());
+}
+
+// run the open program to its end; returns the exit status
+int run_file(Interp &in, const Options &o)
+{
+    for (;;) {
+        InterpStatus st = in.execute_next();
+        if (st == INTERP_EXIT) return 0;
+        if (st != INTERP_ERROR) continue;
+        report(in);
+        if (o.on_error != 0 || in.at_end_of_file()) return o.on_error == 0 ? 0 : 1;
+    }
+}
+
+// read MDI lines from stdin until EOF or "quit"
+int run_stdin(Interp &in, const Options &o)
+{
+    char line[1024];
+    bool tty = isatty(0);
+    for (;;) {
+        if (tty) { fprintf(stderr, "READ => "); }
+        if (!fgets(line, sizeof line, stdin)) return 0;
+        line[strcspn(line, "\r\n")] = 0;
+        if (strcmp(line, "quit") == 0) return 0;
+        if (in.execute_line(line) == INTERP_ERROR) {
+            report(in);
+            if (o.on_error == 2) return 1;
+        }
+    }
+}
+
+// the interactive menu shown without -g (1 starts)
+void menu()
+{
+    fprintf(stderr, "enter a number:\n1 = start interpreting\n2 = choose parameter file ...\n"
+                    "3 = choose tool table ...\n4 = turn block delete switch ON\n"
+                    "5 = adjust error handling...\nenter choice => ");
+    char buf[64];
+    while (fgets(buf, sizeof buf, stdin) && atoi(buf) != 1) fprintf(stderr, "enter choice => ");
+}
+
+// initialise, run the file or stdin, close; returns the exit status
+int run(Interp &in, const Options &o, const std::vector<CanonTool> &tools)
+{
+    in.state().tools = tools;
+    in.set_task(o.task);
+    in.set_block_delete(o.block_delete);
+    if (!o.var_file.empty()) in.set_var_file(o.var_file);
+    try {
+        in.init();
+    } catch (const InterpError &e) {
+        fflush(stdout);
+        fprintf(stderr, "%s\n", e.what());
+        return 1;
+    }
+    if (o.input.empty()) {
+        int st = run_stdin(in, o);
+        in.exit();
+        return st;
+    }
+    try {
+        in.open(o.input);
+    } catch (const InterpError &e) {
+        fflush(stdout);
+        fprintf(stderr, "%s\n\n", e.what());
+        return 1;
+    }
+    int st = run_file(in, o);
+    in.close();
+    in.exit();
+    return st;
+}
+
+} // namespace
+
+// Entry point.
+int main(int argc, char **argv)
+{
+    Options o;
+    std::vector<CanonTool> tools(1);
+    parse_options(argc, argv, o, tools);
+    if (!o.tool_given) {
+        std::string err, path = tree_root() + "/configs/sim/sim.tbl";
+        if (!load_tool_table(path, tools, err)) {
+            fprintf(stderr, "%s\n", err.c_str());
+            return 1;
+        }
+    }
+    setvbuf(stdout, nullptr, _IOFBF, 1 << 16);
+    setvbuf(stderr, nullptr, _IONBF, 0);
+    if (!o.go) menu();
+    fprintf(stderr, "executing\n");
+    FILE *out = stdout;
+    if (!o.output.empty() && !(out = fopen(o.output.c_str(), "w"))) {
+        fprintf(stderr, "could not open output file %s\n", o.output.c_str());
+        return 1;
+    }
+    std::string empty;
+    SaiCanon canon(out, &empty);
+    Interp in(canon);
+    if (!o.ini_file.empty()) {
+        setenv("INI_FILE_NAME", o.ini_file.c_str(), 1);
+        if (!in.load_ini(o.ini_file)) {
+            fprintf(stderr, "could not open supplied INI file %s\n", o.ini_file.c_str());
+            return 1;
+        }
+        IniFile ini(o.ini_file);
+        auto units = ini.Find("LINEAR_UNITS", "TRAJ");
+        canon.set_machine_mm(units && *units == "mm");
+    }
+    canon.set_line_source(&in.line_text());
+    int status = run(in, o, tools);
+    fflush(stdout);
+    if (out != stdout) fclose(out);
+    return status;
+}

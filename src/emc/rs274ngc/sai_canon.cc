@@ -1,0 +1,262 @@
+// sai_canon.cc: printed canon calls of the standalone interpreter, in canon.md §3's exact formats.
+#include "sai_canon.hh"
+
+#include <cmath>
+#include <cstdarg>
+#include <cstring>
+
+// Append v formatted like printf("%.4f"); exact (fast path away from rounding ties).
+char *format_fixed4(char *buf, double v)
+{
+    double a = std::fabs(v);
+    if (a < 1e6) {
+        double t = a * 10000.0;
+        double r = std::floor(t + 0.5);
+        double frac = t - std::floor(t);
+        if (std::fabs(frac - 0.5) > 1e-4) {
+            long long n = (long long)r;
+            char tmp[32];
+            int len = 0;
+            for (int i = 0; i < 4; i++) { tmp[len++] = (char)('0' + n % 10); n /= 10; }
+            tmp[len++] = '.';
+            do { tmp[len++] = (char)('0' + n % 10); n /= 10; } while (n);
+            if (std::signbit(v)) *buf++ = '-';
+            while (len) *buf++ = tmp[--len];
+            *buf = 0;
+            return buf;
+        }
+    }
+    return buf + sprintf(buf, "%.4f", v);
+}
+
+// Write one call line: counter, N marker, text.
+void SaiCanon::emit(const char *text)
+{
+    if (!out_) return;
+    char head[64];
+    int n = snprintf(head, sizeof head, "%5ld ", ++counter_);
+    const std::string &l = *line_;
+    size_t i = 0;
+    while (i < l.size() && (l[i] == ' ' || l[i] == '\t' || l[i] == '/')) i++;
+    if (i < l.size() && (l[i] == 'n' || l[i] == 'N')) {
+        head[n++] = 'N';
+        size_t k = i + 1, digits = 0;
+        while (k < l.size() && l[k] >= '0' && l[k] <= '9' && n < 40) { head[n++] = l[k++]; digits++; }
+        while (digits++ < 6) head[n++] = ' ';
+    } else {
+        memcpy(head + n, "N..... ", 7);
+        n += 7;
+    }
+    fwrite(head, 1, n, out_);
+    fputs(text, out_);
+    fputc('\n', out_);
+}
+
+// printf-style emit.
+void SaiCanon::emitf(const char *fmt, ...)
+{
+    if (!out_) return;
+    char buf[1024];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(buf, sizeof buf, fmt, ap);
+    va_end(ap);
+    emit(buf);
+}
+
+// NAME(v1<sep>v2...) with count pose values.
+void SaiCanon::emit_pose(const char *name, int count, const CanonPose &p, const char *sep)
+{
+    if (!out_) return;
+    const double v[9] = {p.x, p.y, p.z, p.a, p.b, p.c, p.u, p.v, p.w};
+    char buf[512];
+    char *e = buf + strlen(strcpy(buf, name));
+    *e++ = '(';
+    for (int i = 0; i < count; i++) {
+        if (i) e = stpcpy(e, sep);
+        e = format_fixed4(e, v[i]);
+    }
+    *e++ = ')';
+    *e = 0;
+    emit(buf);
+}
+
+// Remember the last commanded point (program coordinates).
+void SaiCanon::track(const CanonPose &p) { pos_ = p; }
+
+void SaiCanon::set_g5x_offset(int origin, const CanonPose &p)
+{
+    char name[32];
+    snprintf(name, sizeof name, "SET_G5X_OFFSET(%d, ", origin);
+    char buf[512];
+    const double v[6] = {p.x, p.y, p.z, p.a, p.b, p.c};
+    char *e = stpcpy(buf, name);
+    for (int i = 0; i < 6; i++) {
+        if (i) e = stpcpy(e, ", ");
+        e = format_fixed4(e, v[i]);
+    }
+    strcpy(e, ")");
+    emit(buf);
+}
+void SaiCanon::set_g92_offset(const CanonPose &p) { emit_pose("SET_G92_OFFSET", 6, p, ", "); }
+void SaiCanon::set_xy_rotation(double deg) { emitf("SET_XY_ROTATION(%.4f)", deg); }
+void SaiCanon::use_length_units(CanonUnits u)
+{
+    units_ = u;
+    emit(u == CANON_UNITS_INCHES ? "USE_LENGTH_UNITS(CANON_UNITS_INCHES)"
+         : u == CANON_UNITS_MM   ? "USE_LENGTH_UNITS(CANON_UNITS_MM)"
+                                 : "USE_LENGTH_UNITS(CANON_UNITS_CM)");
+}
+void SaiCanon::select_plane(CanonPlane p)
+{
+    emit(p == CANON_PLANE_XY ? "SELECT_PLANE(CANON_PLANE_XY)"
+         : p == CANON_PLANE_YZ ? "SELECT_PLANE(CANON_PLANE_YZ)"
+         : p == CANON_PLANE_XZ ? "SELECT_PLANE(CANON_PLANE_XZ)"
+                               : "SELECT_PLANE(CANON_PLANE_UNKNOWN)");
+}
+void SaiCanon::set_feed_reference(CanonFeedReference r)
+{
+    emit(r == CANON_XYZ ? "SET_FEED_REFERENCE(CANON_XYZ)" : "SET_FEED_REFERENCE(CANON_WORKPIECE)");
+}
+void SaiCanon::set_feed_mode(int spindle, int mode) { emitf("SET_FEED_MODE(%d, %d)", spindle, mode); }
+void SaiCanon::set_feed_rate(double rate)
+{
+    char buf[64];
+    strcpy(format_fixed4(stpcpy(buf, "SET_FEED_RATE("), rate), ")");
+    emit(buf);
+}
+void SaiCanon::set_motion_control_mode(CanonMotionMode m, double tol)
+{
+    if (m == CANON_CONTINUOUS) emitf("SET_MOTION_CONTROL_MODE(CANON_CONTINUOUS, %f)", tol);
+    else if (m == CANON_EXACT_PATH) emit("SET_MOTION_CONTROL_MODE(CANON_EXACT_PATH)");
+    else emit("SET_MOTION_CONTROL_MODE(CANON_EXACT_STOP)");
+}
+void SaiCanon::set_planner_mode(int type, double peak)
+{
+    emitf("SET_PLANNER_MODE(type=%d, peak_scale=%f)", type, peak);
+}
+void SaiCanon::set_naivecam_tolerance(double tol) { emitf("SET_NAIVECAM_TOLERANCE(%.4f)", tol); }
+void SaiCanon::straight_traverse(int, const CanonPose &p)
+{
+    emit_pose("STRAIGHT_TRAVERSE", 6, p, ", ");
+    track(p);
+}
+void SaiCanon::straight_feed(int, const CanonPose &p)
+{
+    emit_pose("STRAIGHT_FEED", 6, p, ", ");
+    track(p);
+}
+void SaiCanon::arc_feed(int, double e1, double e2, double c1, double c2, int rot, double ae,
+                        double a, double b, double c, double, double, double)
+{
+    if (out_) {
+        char buf[512];
+        char *e = stpcpy(buf, "ARC_FEED(");
+        const double v1[4] = {e1, e2, c1, c2};
+        for (double v : v1) e = stpcpy(format_fixed4(e, v), ", ");
+        e += sprintf(e, "%d, ", rot);
+        const double v2[4] = {ae, a, b, c};
+        for (int i = 0; i < 4; i++) {
+            if (i) e = stpcpy(e, ", ");
+            e = format_fixed4(e, v2[i]);
+        }
+        strcpy(e, ")");
+        emit(buf);
+    }
+}
+void SaiCanon::turn_probe_on() { emit("TURN_PROBE_ON()"); }
+void SaiCanon::turn_probe_off() { emit("TURN_PROBE_OFF()"); }
+// Probe: the sai model stops 0.01 in / 0.254 mm short of the target, toward the start.
+void SaiCanon::straight_probe(int, const CanonPose &p, int)
+{
+    emit_pose("STRAIGHT_PROBE", 6, p, ", ");
+    probe_ = p;
+    double back = units_ == CANON_UNITS_INCHES ? 0.01 : 0.254;
+    double dx = p.x - pos_.x, dy = p.y - pos_.y, dz = p.z - pos_.z;
+    double len = std::sqrt(dx * dx + dy * dy + dz * dz);
+    CanonPose end = p;
+    if (len > 0) {
+        end.x -= dx / len * back;
+        end.y -= dy / len * back;
+        end.z -= dz / len * back;
+    }
+    pos_ = end;
+}
+void SaiCanon::rigid_tap(int, double x, double y, double z, double)
+{
+    char buf[128];
+    char *e = stpcpy(buf, "RIGID_TAP(");
+    e = stpcpy(format_fixed4(e, x), ", ");
+    e = stpcpy(format_fixed4(e, y), ", ");
+    strcpy(format_fixed4(e, z), ")");
+    emit(buf);
+}
+void SaiCanon::dwell(double s) { emitf("DWELL(%.4f)", s); }
+void SaiCanon::nurbs_g5_feed(int, const std::vector<CanonNurbsPoint> &pts, unsigned, CanonPlane)
+{
+    emitf("NURBS_G5_FEED(%lu, ...)", (unsigned long)pts.size());
+}
+void SaiCanon::start_speed_feed_synch(int, double f, bool v)
+{
+    emitf("START_SPEED_FEED_SYNC(%f,%d)", f, v ? 1 : 0);
+}
+void SaiCanon::stop_speed_feed_synch() { emit("STOP_SPEED_FEED_SYNCH()"); }
+void SaiCanon::finish() { emit("FINISH()"); }
+void SaiCanon::on_reset() { emit("ON_RESET()"); }
+void SaiCanon::set_spindle_mode(int s, double css) { emitf("SET_SPINDLE_MODE(%d %.4f)", s, css); }
+void SaiCanon::set_spindle_speed(int s, double v) { emitf("SET_SPINDLE_SPEED(%i, %.4f)", s, v); }
+void SaiCanon::start_spindle_clockwise(int s) { emitf("START_SPINDLE_CLOCKWISE(%i)", s); }
+void SaiCanon::start_spindle_counterclockwise(int s)
+{
+    emitf("START_SPINDLE_COUNTERCLOCKWISE(%i)", s);
+}
+void SaiCanon::stop_spindle_turning(int s) { emitf("STOP_SPINDLE_TURNING(%i)", s); }
+void SaiCanon::orient_spindle(int s, double a, int m) { emitf("ORIENT_SPINDLE(%d, %.4f, %d)", s, a, m); }
+void SaiCanon::wait_spindle_orient_complete(int s, double t)
+{
+    emitf("SPINDLE.%i.WAIT_ORIENT_COMPLETE(%.4f)", s, t);
+}
+void SaiCanon::mist_on() { emit("MIST_ON()"); }
+void SaiCanon::mist_off() { emit("MIST_OFF()"); }
+void SaiCanon::flood_on() { emit("FLOOD_ON()"); }
+void SaiCanon::flood_off() { emit("FLOOD_OFF()"); }
+void SaiCanon::select_tool(int t) { emitf("SELECT_TOOL(%d)", t); }
+void SaiCanon::change_tool() { emit("CHANGE_TOOL()"); }
+void SaiCanon::change_tool_number(int i) { emitf("CHANGE_TOOL_NUMBER(%d)", i); }
+void SaiCanon::reload_tooldata() { emit("RELOAD_TOOLDATA()"); }
+void SaiCanon::set_tool_table_entry(int index, const CanonTool &t)
+{
+    const CanonPose &o = t.offset;
+    emitf("SET_TOOL_TABLE_ENTRY(%d, %d, %.4f %.4f %.4f %.4f %.4f %.4f %.4f %.4f %.4f, %.4f, %.4f, %d)",
+          index, t.toolno, o.x, o.y, o.z, o.a, o.b, o.c, o.u, o.v, o.w, t.frontangle,
+          t.backangle, t.orientation);
+}
+void SaiCanon::use_tool_length_offset(const CanonPose &o)
+{
+    emitf("USE_TOOL_LENGTH_OFFSET(%.4f %.4f %.4f, %.4f %.4f %.4f, %.4f %.4f %.4f)", o.x, o.y, o.z,
+          o.a, o.b, o.c, o.u, o.v, o.w);
+}
+void SaiCanon::enable_feed_override() { emit("ENABLE_FEED_OVERRIDE()"); }
+void SaiCanon::disable_feed_override() { emit("DISABLE_FEED_OVERRIDE()"); }
+void SaiCanon::enable_speed_override(int s) { emitf("ENABLE_SPEED_OVERRIDE(%i)", s); }
+void SaiCanon::disable_speed_override(int s) { emitf("DISABLE_SPEED_OVERRIDE(%i)", s); }
+void SaiCanon::enable_adaptive_feed() { emit("ENABLE_ADAPTIVE_FEED()"); }
+void SaiCanon::disable_adaptive_feed() { emit("DISABLE_ADAPTIVE_FEED()"); }
+void SaiCanon::enable_feed_hold() { emit("ENABLE_FEED_HOLD()"); }
+void SaiCanon::disable_feed_hold() { emit("DISABLE_FEED_HOLD()"); }
+void SaiCanon::set_motion_output_bit(int n) { emitf("SET_MOTION_OUTPUT_BIT(%d)", n); }
+void SaiCanon::clear_motion_output_bit(int n) { emitf("CLEAR_MOTION_OUTPUT_BIT(%d)", n); }
+void SaiCanon::set_aux_output_bit(int n) { emitf("SET_AUX_OUTPUT_BIT(%d)", n); }
+void SaiCanon::clear_aux_output_bit(int n) { emitf("CLEAR_AUX_OUTPUT_BIT(%d)", n); }
+void SaiCanon::set_motion_output_value(int n, double v) { emitf("SET_MOTION_OUTPUT_VALUE(%d,%f)", n, v); }
+void SaiCanon::set_aux_output_value(int n, double v) { emitf("SET_AUX_OUTPUT_VALUE(%d,%f)", n, v); }
+void SaiCanon::comment(const std::string &t) { emitf("COMMENT(\"%s\")", t.c_str()); }
+void SaiCanon::message(const std::string &t) { emitf("MESSAGE(\"%s\")", t.c_str()); }
+void SaiCanon::log(const std::string &t) { emitf("LOG(\"%s\")", t.c_str()); }
+void SaiCanon::logopen(const std::string &t) { emitf("LOGOPEN(\"%s\")", t.c_str()); }
+void SaiCanon::logappend(const std::string &t) { emitf("LOGAPPEND(\"%s\")", t.c_str()); }
+void SaiCanon::logclose() { emit("LOGCLOSE()"); }
+void SaiCanon::program_stop() { emit("PROGRAM_STOP()"); }
+void SaiCanon::optional_program_stop() { emit("OPTIONAL_PROGRAM_STOP()"); }
+void SaiCanon::pallet_shuttle() { emit("PALLET_SHUTTLE()"); }
+void SaiCanon::program_end() { emit("PROGRAM_END()"); }

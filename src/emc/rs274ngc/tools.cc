@@ -1,0 +1,127 @@
+// tools.cc: T, M6, M61, G10 L0/L1/L10/L11 and tool-table lookups (gcode.md §13).
+#include <cmath>
+
+#include "interp.hh"
+
+namespace {
+
+const char AXES[] = "xyzabcuvw";
+
+// set axis i of a canon pose
+void pose_set(CanonPose &p, int i, double v)
+{
+    double *f[] = {&p.x, &p.y, &p.z, &p.a, &p.b, &p.c, &p.u, &p.v, &p.w};
+    *f[i] = v;
+}
+
+} // namespace
+
+// Tool-data index of tool number toolno (index 0 = spindle excluded), -1 if absent.
+int Interp::find_tool_index(int toolno) const
+{
+    for (size_t i = 1; i < s_.tools.size(); i++)
+        if (s_.tools[i].toolno == toolno) return (int)i;
+    return -1;
+}
+
+// T word (step 8).
+void Interp::do_select_tool(Block &b)
+{
+    if (!b.word('t')) return;
+    int t = (int)b.value('t');
+    int index = t == 0 ? 0 : find_tool_index(t);
+    if (index < 0)
+        throw InterpError("Requested tool " + std::to_string(t) + " not found in the tool table");
+    out().select_tool(t);
+    s_.selected_tool = t;
+    s_.selected_pocket = index;
+}
+
+// M6 / M61 (step 10); returns true when the block must end with execute-finish.
+bool Interp::do_tool_change(Block &b)
+{
+    int m = b.m_modes[MG_TOOL];
+    if (m == -1) return false;
+    if (s_.comp_side != CANON_SIDE_OFF)
+        throw InterpError("Cannot change tools with cutter radius compensation on");
+    if (m == 61) {
+        if (!b.word('q') || b.value('q') < 0)
+            throw InterpError("Need non-negative Q-word to specify tool number with M61");
+        int q = (int)std::nearbyint(b.value('q'));
+        int index = q == 0 ? 0 : find_tool_index(q);
+        if (index < 0)
+            throw InterpError("Requested tool " + std::to_string(q) + " not found in the tool table");
+        out().change_tool_number(index);
+        s_.current_pocket = index;
+        s_.tools[0].toolno = q;
+        return true;
+    }
+    if (s_.selected_pocket < 0) throw InterpError("Need tool prepared -Txx- for toolchange");
+    if (!s_.settings.tool_change_with_spindle_on) {
+        for (int sp = 0; sp < SPINDLE_COUNT; sp++) {
+            out().stop_spindle_turning(sp);
+            s_.spindle_dir[sp] = CANON_STOPPED;
+        }
+    }
+    if (s_.settings.tool_change_quill_up) {
+        out().comment("AXIS,hide");
+        Pose p = s_.current;
+        p[AX_Z] = -s_.tool_offset[AX_Z];
+        out().straight_traverse(-1, canon_pose(p));
+        s_.current = p;
+        out().comment("AXIS,show");
+    }
+    out().change_tool();
+    int index = s_.selected_pocket;
+    if (index > 0 && index < (int)s_.tools.size()) s_.tools[0] = s_.tools[index];
+    s_.current_pocket = index;
+    if (s_.settings.retain_g43 && s_.tlo_code == 430) {
+        Pose tlo{};
+        double k = s_.machine_to_program();
+        const CanonPose &o = s_.tools[0].offset;
+        if (s_.selected_tool != 0) tlo = Pose{o.x * k, o.y * k, o.z * k, o.a, o.b, o.c,
+                                               o.u * k, o.v * k, o.w * k};
+        apply_tlo(tlo);
+    }
+    return true;
+}
+
+// G10 L0, L1, L10, L11: tool table edits.
+void Interp::g10_tool(const Block &b, int l)
+{
+    if (l == 0) {
+        if (!s_.tools.empty() && s_.tools[0].toolno > 0)
+            throw InterpError("G10 L0 not allowed with loaded tool " +
+                              std::to_string(s_.tools[0].toolno) + "\n");
+        out().reload_tooldata();
+        return;
+    }
+    if (s_.comp_side != CANON_SIDE_OFF)
+        throw InterpError("Cannot change tool table with cutter radius compensation on");
+    int p = b.word('p') ? (int)std::nearbyint(b.value('p')) : 0;
+    int index = p > 0 ? find_tool_index(p) : -1;
+    if (index < 0) throw InterpError("P value out of range with G10 L" + std::to_string(l));
+    bool any = b.word('r') || b.word('i') || b.word('j') || b.word('q');
+    for (int i = 0; i < 6; i++) any = any || b.word(AXES[i]);
+    if (!any && l == 1) throw InterpError("G10 L1 without offsets has no effect");
+    CanonTool t = s_.tools[index];
+    double k = s_.machine_to_program();
+    Pose m = program_to_machine_pose(s_.current);
+    for (int i = 0; i < 6; i++) {
+        if (!b.word(AXES[i])) continue;
+        double v = b.value(AXES[i]);
+        if (l == 10) v = s_.current[i] + s_.tool_offset[i] - v;
+        if (l == 11) v = m[i] - s_.params[5381 + i] * (i >= AX_A ? 1.0 : k) - v;
+        pose_set(t.offset, i, i >= AX_A ? v : v / k);
+    }
+    if (b.word('r')) t.diameter = 2.0 * b.value('r') / k;
+    if (b.word('i')) t.frontangle = b.value('i');
+    if (b.word('j')) t.backangle = b.value('j');
+    if (b.word('q')) t.orientation = (int)b.value('q');
+    s_.tools[index] = t;
+    out().set_tool_table_entry(index, t);
+    if (index == s_.current_pocket && !s_.settings.random_toolchanger) {
+        s_.tools[0] = t;
+        out().set_tool_table_entry(0, t);
+    }
+}

@@ -1,0 +1,66 @@
+// tooltable.cc: reads a LinuxCNC tool table file (canon.md §3 "Tool table file format").
+#include "tooltable.hh"
+
+#include <cctype>
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+
+namespace {
+
+// store one "<letter><value>" word into t; false when the letter is unknown or the value bad
+bool tool_word(CanonTool &t, char letter, const char *text)
+{
+    char *end;
+    double v = strtod(text, &end);
+    if (end == text || *end != '\0') return false;
+    double *axes[] = {&t.offset.x, &t.offset.y, &t.offset.z, &t.offset.a, &t.offset.b,
+                      &t.offset.c, &t.offset.u, &t.offset.v, &t.offset.w};
+    const char *axis_letters = "XYZABCUVW";
+    const char *p = strchr(axis_letters, letter);
+    if (p && letter) { *axes[p - axis_letters] = v; return true; }
+    switch (letter) {
+    case 'T': t.toolno = (int)v; return true;
+    case 'P': t.pocketno = (int)v; return true;
+    case 'D': t.diameter = v; return true;
+    case 'I': t.frontangle = v; return true;
+    case 'J': t.backangle = v; return true;
+    case 'Q': t.orientation = (int)v; return true;
+    default: return false;
+    }
+}
+
+} // namespace
+
+// Load path into tools (index 0 = spindle kept, tools appended in load order).
+bool load_tool_table(const std::string &path, std::vector<CanonTool> &tools, std::string &error)
+{
+    FILE *f = fopen(path.c_str(), "r");
+    if (!f) {
+        error = "emc/tooldata/tooldata_common.cc, 305: Failed to open tool table file '" + path +
+                "': " + strerror(errno);
+        return false;
+    }
+    tools.resize(1);
+    char line[1024];
+    int lineno = 0;
+    while (fgets(line, sizeof line, f)) {
+        lineno++;
+        char *semi = strchr(line, ';');
+        if (semi) *semi = 0;
+        CanonTool t;
+        bool any = false;
+        for (char *w = strtok(line, " \t\r\n"); w; w = strtok(nullptr, " \t\r\n")) {
+            char letter = (char)toupper((unsigned char)w[0]);
+            if (!tool_word(t, letter, w + 1)) {
+                fprintf(stderr, "%s:%d: bad tool table word '%s'\n", path.c_str(), lineno, w);
+                continue;
+            }
+            any = true;
+        }
+        if (any && t.toolno >= 0) tools.push_back(t);
+    }
+    fclose(f);
+    return true;
+}

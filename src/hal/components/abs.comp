@@ -1,0 +1,15 @@
+component abs "Absolute value and sign of a float";
+pin in float in "Analog input value";
+pin out float out "Absolute value of in";
+pin out bit sign "TRUE when in is negative";
+pin out bit is_positive "TRUE when in is above 1e-6";
+pin out bit is_negative "TRUE when in is below -1e-6";
+function _;
+license "GPL";
+author "OpenEMC";
+;;
+double v = in;
+sign = v < 0.0;
+out = v < 0.0 ? -v : v;
+is_positive = v > 0.000001;
+is_negative = v < -0.000001;

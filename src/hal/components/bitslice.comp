@@ -1,0 +1,11 @@
+component bitslice "Split a u32 into its bits";
+pin in u32 in "Input word";
+pin out bit out-##[32 : personality] "Bit outputs";
+option default_personality 32;
+function _;
+description "personality sets the number of output bits (default 32, at most 32).";
+license "GPL";
+author "OpenEMC";
+;;
+int i;
+for (i = 0; i < personality; i++) out(i) = (in >> i) & 1;

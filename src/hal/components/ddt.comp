@@ -1,0 +1,10 @@
+component ddt "Compute the derivative of the input";
+pin in float in;
+pin out float out;
+variable double old;
+function _;
+license "GPL";
+;;
+double now = in;
+out = (now - old) / fperiod;
+old = now;

@@ -1,0 +1,14 @@
+component deadzone "Return the center if the input is near it, else shift toward it";
+pin in float in;
+pin out float out;
+param rw float center = 0.0 "Center of the dead zone";
+param rw float threshold = 1.0 "Width of the dead zone";
+function _;
+license "GPL";
+author "OpenEMC";
+;;
+double half = threshold / 2.0, v = in;
+if (half < 0) half = -half;
+if (v > center + half) out = v - half;
+else if (v < center - half) out = v + half;
+else out = center;

@@ -1,0 +1,15 @@
+component demux "Select one of several bit outputs from a number";
+pin in bit sel_bit-##[5] "Binary-weighted select bits, added to sel-u32";
+pin in u32 sel_u32 "Select value";
+pin out bit out-##[32 : personality] "Outputs";
+param rw bit bargraph "When TRUE, every output below the selected one is TRUE too";
+option default_personality 32;
+function _;
+license "GPL";
+author "OpenEMC";
+;;
+int i;
+unsigned s = sel_u32;
+for (i = 0; i < 5; i++) if (sel_bit(i)) s += 1u << i;
+if (s > (unsigned)(personality - 1)) s = personality - 1;
+for (i = 0; i < personality; i++) out(i) = bargraph ? (unsigned)i <= s : (unsigned)i == s;

@@ -1,0 +1,18 @@
+component flipflop "D-type flip-flop with set and reset";
+pin in bit data "Latched on the rising edge of clk";
+pin in bit clk "Clock";
+pin in bit set "When TRUE, out is forced TRUE";
+pin in bit reset "When TRUE, out is forced FALSE (wins over set)";
+pin io bit out "Output";
+pin io bit out_not "Inverted output";
+variable int oldclk;
+function _;
+license "GPL";
+author "OpenEMC";
+;;
+int c = clk;
+if (c && !oldclk) out = data;
+oldclk = c;
+if (set) out = 1;
+if (reset) out = 0;
+out_not = !out;

@@ -1,0 +1,12 @@
+component hypot "Three-input hypotenuse (Euclidean distance)";
+pin in float in0;
+pin in float in1;
+pin in float in2;
+pin out float out "sqrt(in0^2 + in1^2 + in2^2)";
+function _;
+include <rtapi_math.h>;
+license "GPL";
+author "OpenEMC";
+;;
+double a = in0, b = in1, c = in2;
+out = sqrt(a * a + b * b + c * c);

@@ -1,0 +1,13 @@
+component ilowpass "Low-pass filter with integer input and output";
+pin in s32 in;
+pin out s32 out "floor(value * scale + 0.5)";
+param rw float scale = 1024 "Output scale";
+param rw float gain = 0.5 "Filter gain";
+variable double value;
+function _;
+include <rtapi_math.h>;
+license "GPL";
+author "OpenEMC";
+;;
+value += (in - value) * gain;
+out = (hal_s32_t)floor(value * scale + 0.5);

@@ -1,0 +1,12 @@
+component invert "Reciprocal of the input with a deadband around zero";
+pin in float in;
+pin out float out "1/in, or +/-1/deadband when abs(in) < deadband";
+param rw float deadband;
+function _;
+license "GPL";
+author "OpenEMC";
+;;
+double v = in;
+if (deadband > 0 && v > -deadband && v < deadband) out = v < 0 ? -1.0 / deadband : 1.0 / deadband;
+else if (v == 0.0) out = 0.0;
+else out = 1.0 / v;

@@ -1,0 +1,13 @@
+component limit1 "Clamp a value to a range";
+pin in float in;
+pin out float out;
+pin in float min_ = -1e20;
+pin in float max_ = 1e20;
+function _;
+license "GPL";
+author "OpenEMC";
+;;
+double v = in;
+if (v > max_) v = max_;
+if (v < min_) v = min_;
+out = v;

@@ -1,0 +1,11 @@
+component lowpass "First-order low-pass filter";
+pin in float in;
+pin out float out "out += (in - out) * gain";
+pin in bit load "When TRUE, out is set to in";
+param rw float gain;
+function _;
+license "GPL";
+author "OpenEMC";
+;;
+if (load) out = in;
+else out = out + (in - out) * gain;

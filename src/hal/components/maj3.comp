@@ -1,0 +1,12 @@
+component maj3 "Majority of three inputs";
+pin in bit in1;
+pin in bit in2;
+pin in bit in3;
+pin out bit out "TRUE when at least two inputs are TRUE (inverted when invert is TRUE)";
+param rw bit invert;
+function _;
+license "GPL";
+author "OpenEMC";
+;;
+int m = (in1 && in2) || (in1 && in3) || (in2 && in3);
+out = invert ? !m : m;

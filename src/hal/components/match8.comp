@@ -1,0 +1,12 @@
+component match8 "Eight-bit binary match detector";
+pin in bit in = TRUE "Cascade input";
+pin in bit a#[8];
+pin in bit b#[8];
+pin out bit out "TRUE when in is TRUE and every a-i equals b-i";
+function _;
+license "GPL";
+author "OpenEMC";
+;;
+int i, same = 1;
+for (i = 0; i < 8; i++) if ((!a(i)) != (!b(i))) same = 0;
+out = in && same;

@@ -1,0 +1,10 @@
+component mux2 "Select one of two float values";
+pin in bit sel;
+pin out float out "Follows in0 when sel is FALSE, in1 when TRUE";
+pin in float in1;
+pin in float in0;
+function _;
+license "GPL";
+author "OpenEMC";
+;;
+out = sel ? in1 : in0;

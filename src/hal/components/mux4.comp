@@ -1,0 +1,14 @@
+component mux4 "Select one of four float values";
+pin in bit sel0;
+pin in bit sel1;
+pin out float out "in0..in3 chosen by sel1*2+sel0";
+pin in float in0;
+pin in float in1;
+pin in float in2;
+pin in float in3;
+function _;
+license "GPL";
+author "OpenEMC";
+;;
+int s = (sel1 ? 2 : 0) + (sel0 ? 1 : 0);
+out = s == 0 ? in0 : s == 1 ? in1 : s == 2 ? in2 : in3;

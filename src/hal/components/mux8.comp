@@ -1,0 +1,12 @@
+component mux8 "Select one of eight float values";
+pin in bit sel0;
+pin in bit sel1;
+pin in bit sel2;
+pin out float out "in0..in7 chosen by sel2*4+sel1*2+sel0";
+pin in float in#[8];
+function _;
+license "GPL";
+author "OpenEMC";
+;;
+int s = (sel2 ? 4 : 0) + (sel1 ? 2 : 0) + (sel0 ? 1 : 0);
+out = in(s);

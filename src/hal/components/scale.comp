@@ -1,0 +1,10 @@
+component scale "Linear transform: out = in * gain + offset";
+pin in float in;
+pin in float gain;
+pin in float offset;
+pin out float out;
+function _;
+license "GPL";
+author "OpenEMC";
+;;
+out = in * gain + offset;

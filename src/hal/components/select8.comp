@@ -1,0 +1,10 @@
+component select8 "Eight-output selector";
+pin in bit enable = TRUE "When FALSE, all outputs are FALSE";
+pin in s32 sel "Number of the output to set TRUE";
+pin out bit out#[8] "out-i is TRUE when enable and sel == i";
+function _;
+license "GPL";
+author "OpenEMC";
+;;
+int i;
+for (i = 0; i < 8; i++) out(i) = enable && sel == i;

@@ -1,0 +1,15 @@
+component wcomp "Window comparator";
+pin in float in;
+pin in float min_ "Low end of the window";
+pin in float max_ "High end of the window";
+pin out bit out "TRUE when min < in < max";
+pin out bit under "TRUE when in <= min";
+pin out bit over "TRUE when in >= max";
+function _;
+license "GPL";
+author "OpenEMC";
+;;
+double v = in;
+under = v <= min_;
+over = v >= max_;
+out = !(v <= min_ || v >= max_);

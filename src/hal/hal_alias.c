@@ -1,0 +1,142 @@
+/* hal_alias.c: pin and param aliases (spec/hal.md §11): rename, remember the original. */
+#include "hal_internal.h"
+
+/* Where a pin/param keeps its name and alias record; pins also re-sort in their signal. */
+typedef struct {
+    hal_index_t *index;     /* pins or params */
+    int *alias_list;        /* pin_alias_list or param_alias_list */
+    int *oldname;           /* the object's oldname field */
+    hal_node_t *node;       /* the object */
+    hal_pin_t *pin;         /* the pin (NULL for params) */
+} hal_alias_target_t;
+
+/* Rename the object and re-sort it in its lists. */
+static void hal_alias_rename(hal_alias_target_t *t, const char *name)
+{
+    hal_sig_t *sig = (t->pin && t->pin->signal) ? SHMPTR(t->pin->signal) : NULL;
+
+    halpr_index_remove(t->index, t->node);
+    if (sig)
+        halpr_sig_pin_remove(sig, t->pin);
+    strcpy(t->node->name, name);
+    halpr_index_insert_sorted(t->index, t->node);
+    if (sig)
+        halpr_sig_pin_insert(sig, t->pin);
+}
+
+/* Drop the alias record and go back to the original name (no-op when none). */
+static void hal_alias_restore(hal_alias_target_t *t)
+{
+    hal_oldname_t *o;
+    int *link = t->alias_list;
+
+    if (!*t->oldname)
+        return;
+    o = SHMPTR(*t->oldname);
+    while (*link && *link != *t->oldname)
+        link = &((hal_oldname_t *)SHMPTR(*link))->next_ptr;
+    if (*link)
+        *link = o->next_ptr;
+    *t->oldname = 0;
+    hal_alias_rename(t, o->name);
+    halpr_obj_free(HAL_KIND_ALIAS, o);
+}
+
+/* Give the object a new name, creating the alias record on first use. */
+static int hal_alias_set(hal_alias_target_t *t, const char *alias)
+{
+    if (!*t->oldname) {
+        hal_oldname_t *o = halpr_obj_alloc(HAL_KIND_ALIAS);
+        if (!o)
+            return -ENOMEM;
+        strcpy(o->name, t->node->name);
+        o->obj_ptr = SHMOFF(t->node);
+        o->next_ptr = *t->alias_list;
+        *t->alias_list = SHMOFF(o);
+        *t->oldname = SHMOFF(o);
+    }
+    hal_alias_rename(t, alias);
+    return 0;
+}
+
+/* Checks shared by pin and param aliasing. */
+static int hal_alias_precheck(const char *what, const char *name, const char *alias)
+{
+    if (!hal_data) {
+        HAL_ERR("%s_alias called before init\n", what);
+        return -EINVAL;
+    }
+    if (hal_data->lock & HAL_LOCK_CONFIG) {
+        HAL_ERR("%s_alias called while HAL locked\n", what);
+        return -EPERM;
+    }
+    if (!name) {
+        HAL_ERR("%s_alias called without a name\n", what);
+        return -EINVAL;
+    }
+    if (alias && strlen(alias) > HAL_NAME_LEN) {
+        HAL_ERR("alias name '%s' is too long\n", alias);
+        return -EINVAL;
+    }
+    return 0;
+}
+
+/* Alias (or with NULL un-alias) a pin. */
+int hal_pin_alias(const char *pin_name, const char *alias)
+{
+    hal_alias_target_t t;
+    hal_pin_t *pin, *other;
+    int rc = hal_alias_precheck("pin", pin_name, alias);
+
+    if (rc < 0)
+        return rc;
+    halpr_mutex_get();
+    other = alias ? halpr_find_pin_by_name(alias) : NULL;
+    pin = halpr_find_pin_by_name(pin_name);
+    if (!pin) {
+        HAL_ERR("pin '%s' not found\n", pin_name);
+        rc = -EINVAL;
+    } else if (other && other != pin) {
+        HAL_ERR("duplicate pin/alias name '%s'\n", alias);
+        rc = -EINVAL;
+    } else {
+        t = (hal_alias_target_t){&hal_data->pins, &hal_data->pin_alias_list,
+                                 &pin->oldname, (hal_node_t *)pin, pin};
+        if (!alias)
+            hal_alias_restore(&t);
+        else
+            rc = hal_alias_set(&t, alias);
+    }
+    halpr_mutex_give();
+    return rc;
+}
+
+/* Alias (or with NULL un-alias) a param. */
+int hal_param_alias(const char *param_name, const char *alias)
+{
+    hal_alias_target_t t;
+    hal_param_t *param, *other;
+    int rc = hal_alias_precheck("param", param_name, alias);
+
+    if (rc < 0)
+        return rc;
+    halpr_mutex_get();
+    other = alias ? halpr_find_param_by_name(alias) : NULL;
+    param = halpr_find_param_by_name(param_name);
+    if (!param) {
+        HAL_ERR("param '%s' not found\n", param_name);
+        rc = -EINVAL;
+    } else if (other && other != param) {
+        HAL_ERR("duplicate parameter/alias name '%s'\n", alias);
+        rc = -EINVAL;
+    } else {
+        t = (hal_alias_target_t){&hal_data->params, &hal_data->param_alias_list,
+                                 &param->oldname, (hal_node_t *)param, NULL};
+        if (!alias)
+            hal_alias_restore(&t);
+        else
+            rc = hal_alias_set(&t, alias);
+    }
+    halpr_mutex_give();
+    return rc;
+}

@@ -1,0 +1,23 @@
+/* hal_lock.c: HAL lock levels (spec/hal.md §10): hal_set_lock / hal_get_lock. */
+#include "hal_internal.h"
+
+/* Set the lock bits that block later configuration calls. */
+int hal_set_lock(unsigned char lock_type)
+{
+    if (!hal_data) {
+        HAL_ERR("set_lock called before init\n");
+        return -EINVAL;
+    }
+    hal_data->lock = lock_type;
+    return 0;
+}
+
+/* Current lock bits (0 when HAL is not mapped). */
+unsigned char hal_get_lock(void)
+{
+    if (!hal_data) {
+        HAL_ERR("get_lock called before init\n");
+        return 0;
+    }
+    return hal_data->lock;
+}

@@ -1,0 +1,110 @@
+/* hal_param_typed.c: the typed param constructors and setters. */
+#include "hal_internal.h"
+#include <stdarg.h>
+
+/* Classic constructors (caller supplies storage) and printf-style variants. */
+#define HAL_PARAM_NEW(T, TYPE, CT)                                                    \
+    int hal_param_##T##_new(const char *name, hal_param_dir_t dir, CT *data_addr,      \
+                            int comp_id)                                               \
+    {                                                                                  \
+        return hal_param_new(name, TYPE, dir, (void *)data_addr, comp_id);             \
+    }                                                                                  \
+    int hal_param_##T##_newf(hal_param_dir_t dir, CT *data_addr, int comp_id,          \
+                             const char *fmt, ...)                                     \
+    {                                                                                  \
+        char name[HAL_NAME_LEN + 1];                                                   \
+        va_list ap;                                                                    \
+        int rc;                                                                        \
+        va_start(ap, fmt);                                                             \
+        rc = halpr_name_fmt(name, fmt, ap);                                            \
+        va_end(ap);                                                                    \
+        if (rc < 0)                                                                    \
+            return rc;                                                                 \
+        return hal_param_new(name, TYPE, dir, (void *)data_addr, comp_id);             \
+    }
+
+HAL_PARAM_NEW(bit, HAL_BIT, hal_bit_t)
+HAL_PARAM_NEW(float, HAL_FLOAT, hal_float_t)
+HAL_PARAM_NEW(u32, HAL_U32, hal_u32_t)
+HAL_PARAM_NEW(s32, HAL_S32, hal_s32_t)
+HAL_PARAM_NEW(u64, HAL_U64, hal_u64_t)
+HAL_PARAM_NEW(s64, HAL_S64, hal_s64_t)
+
+/* New API core: allocate the value cell and create the param on it. */
+static int hal_param_new_ref(int comp_id, hal_type_t type, hal_param_dir_t dir, void **ref,
+                             const char *fmt, va_list ap)
+{
+    char name[HAL_NAME_LEN + 1];
+    void *cell;
+    int rc = halpr_name_fmt(name, fmt, ap);
+
+    if (rc < 0)
+        return rc;
+    cell = hal_malloc(sizeof(hal_data_u));
+    if (!cell)
+        return -ENOMEM;
+    rc = hal_param_new(name, type, dir, cell, comp_id);
+    if (rc < 0)
+        return rc;
+    *ref = cell;
+    return 0;
+}
+
+/* New API constructors: HAL allocates the cell, start value dflt. */
+#define HAL_PARAM_NEW_REF(T, TYPE, CT, DT)                                              \
+    int hal_param_new_##T(int comp_id, hal_param_dir_t dir, CT **ref, DT dflt,           \
+                          const char *fmt, ...)                                          \
+    {                                                                                    \
+        va_list ap;                                                                      \
+        int rc;                                                                          \
+        va_start(ap, fmt);                                                               \
+        rc = hal_param_new_ref(comp_id, TYPE, dir, (void **)ref, fmt, ap);               \
+        va_end(ap);                                                                      \
+        if (rc == 0)                                                                     \
+            **ref = dflt;                                                                \
+        return rc;                                                                       \
+    }
+
+HAL_PARAM_NEW_REF(bool, HAL_BIT, hal_bit_t, bool)
+HAL_PARAM_NEW_REF(si32, HAL_S32, hal_s32_t, int32_t)
+HAL_PARAM_NEW_REF(ui32, HAL_U32, hal_u32_t, uint32_t)
+HAL_PARAM_NEW_REF(sint, HAL_S64, hal_s64_t, int64_t)
+HAL_PARAM_NEW_REF(uint, HAL_U64, hal_u64_t, uint64_t)
+HAL_PARAM_NEW_REF(real, HAL_FLOAT, hal_float_t, real_t)
+
+/* Typed setters by name. */
+int hal_param_bit_set(const char *name, int value)
+{
+    hal_bit_t v = value != 0;
+    return hal_param_set(name, HAL_BIT, (void *)&v);
+}
+
+int hal_param_float_set(const char *name, double value)
+{
+    hal_float_t v = value;
+    return hal_param_set(name, HAL_FLOAT, (void *)&v);
+}
+
+int hal_param_u32_set(const char *name, unsigned long value)
+{
+    hal_u32_t v = value;
+    return hal_param_set(name, HAL_U32, (void *)&v);
+}
+
+int hal_param_s32_set(const char *name, signed long value)
+{
+    hal_s32_t v = value;
+    return hal_param_set(name, HAL_S32, (void *)&v);
+}
+
+int hal_param_u64_set(const char *name, uint64_t value)
+{
+    hal_u64_t v = value;
+    return hal_param_set(name, HAL_U64, (void *)&v);
+}
+
+int hal_param_s64_set(const char *name, int64_t value)
+{
+    hal_s64_t v = value;
+    return hal_param_set(name, HAL_S64, (void *)&v);
+}

@@ -1,0 +1,1 @@
+"""halcompile package: .comp parser, C generator, man page writer and CLI."""

@@ -1,0 +1,90 @@
+"""C code generation: the convenience macros that bind item names for user code."""
+
+UNUSED = '__attribute__((unused))'
+
+
+def pin_macros(item):
+    """Macro lines for one pin."""
+    n, f = item.cname, item.field
+    ro = item.dir == 'in'
+    if item.size is None:
+        ref = '(*__comp_inst->%s)' % f
+        lines = ['#define %s_ptr (__comp_inst->%s)' % (n, f)]
+        if item.newapi:
+            lines.append('#define %s (0+%s)' % (n, ref))
+            if not ro:
+                lines.append('#define %s_set(v) (%s = (v))' % (n, ref))
+        else:
+            lines.append('#define %s %s' % (n, '(0+%s)' % ref if ro else ref))
+        return lines
+    ref = '(*(__comp_inst->%s[i]))' % f
+    lines = ['#define %s_ptr(i) (__comp_inst->%s[i])' % (n, f)]
+    if item.newapi:
+        lines.append('#define %s(i) (0+%s)' % (n, ref))
+        if not ro:
+            lines.append('#define %s_set(i, v) (%s = (v))' % (n, ref))
+    else:
+        lines.append('#define %s(i) %s' % (n, '(0+%s)' % ref if ro else ref))
+    return lines
+
+
+def param_macros(item):
+    """Macro lines for one param."""
+    n, f = item.cname, item.field
+    if item.size is None:
+        ref = '(__comp_inst->%s)' % f
+        if item.newapi:
+            return ['#define %s (0+%s)' % (n, ref), '#define %s_set(v) (%s = (v))' % (n, ref)]
+        return ['#define %s %s' % (n, ref)]
+    ref = '(__comp_inst->%s[i])' % f
+    if item.newapi:
+        return ['#define %s(i) (0+%s)' % (n, ref),
+                '#define %s_set(i, v) (%s = (v))' % (n, ref)]
+    return ['#define %s(i) %s' % (n, ref)]
+
+
+def hook_macros(comp):
+    """FUNCTION/EXTRA_SETUP/EXTRA_CLEANUP/POST_EXPORT/FOR_ALL_INSTS."""
+    inst = 'struct __comp_state *__comp_inst %s' % UNUSED
+    lines = ['#undef FUNCTION',
+             '#define FUNCTION(name) static void name(%s, long period %s)' % (inst, UNUSED),
+             '#undef EXTRA_SETUP',
+             '#define EXTRA_SETUP() static int extra_setup(%s, char *prefix %s, '
+             'long extra_arg %s)' % (inst, UNUSED, UNUSED),
+             '#undef EXTRA_CLEANUP',
+             '#define EXTRA_CLEANUP() static void extra_cleanup(void)',
+             '#undef POST_EXPORT',
+             '#define POST_EXPORT() static int post_export(%s, char *prefix %s, '
+             'long extra_arg %s)' % (inst, UNUSED, UNUSED),
+             '#undef FOR_ALL_INSTS',
+             '#define FOR_ALL_INSTS() struct __comp_state *__comp_inst; '
+             'for (__comp_inst = __comp_first_inst; __comp_inst; '
+             '__comp_inst = __comp_inst->_next)']
+    if comp.option('period') is not False:
+        lines.append('#undef fperiod')
+        lines.append('#define fperiod (period * 1e-9)')
+    return lines
+
+
+def gen_macros(comp, out):
+    """All macros, emitted just before the user's C code."""
+    out.extend(hook_macros(comp))
+    if comp.option('no_convenience_defines'):
+        out.append('')
+        return
+    if comp.uses_personality:
+        out.append('#undef personality')
+        out.append('#define personality (__comp_inst->personality)')
+    for item in comp.items:
+        if item.kind in ('pin', 'param', 'variable'):
+            out.append('#undef %s' % item.cname)
+        if item.kind == 'pin':
+            out.extend(pin_macros(item))
+        elif item.kind == 'param':
+            out.extend(param_macros(item))
+        elif item.kind == 'variable':
+            out.append('#define %s (__comp_inst->%s)' % (item.cname, item.field))
+    if comp.option('data'):
+        out.append('#undef data')
+        out.append('#define data (*(%s *)__comp_inst->_data)' % comp.option('data'))
+    out.append('')

@@ -1,0 +1,167 @@
+/* hal_py_item.c: `_hal.item`, a raw pin or param of a Python-owned component. */
+#include "hal_py.h"
+#include <stdio.h>
+
+/* One pin or param: pins hold a HAL-memory pointer cell, params their value cell. */
+typedef struct {
+    PyObject_HEAD
+    int is_pin;
+    hal_type_t type;
+    int dir;
+    void *storage;   /* pin: hal_data_u ** cell; param: hal_data_u cell */
+    char name[HAL_NAME_LEN + 1];
+} hal_py_item_t;
+
+/* Returns the value cell the item currently reads and writes. */
+static hal_data_u *item_cell(hal_py_item_t *self)
+{
+    if (self->is_pin) {
+        return *(hal_data_u **)self->storage;
+    }
+    return (hal_data_u *)self->storage;
+}
+
+/* Creates the HAL object and wraps it. */
+PyObject *hal_py_item_new(int comp_id, const char *full_name, const char *short_name,
+                          int type, int dir, int is_pin)
+{
+    hal_py_item_t *self;
+    int retval;
+    void *storage = hal_malloc(is_pin ? (long)sizeof(void *) : 8);
+
+    if (storage == NULL) {
+        return hal_py_raise_errno(-ENOMEM);
+    }
+    if (is_pin) {
+        retval = hal_pin_new(full_name, type, dir, (void **)storage, comp_id);
+    } else {
+        retval = hal_param_new(full_name, type, dir, storage, comp_id);
+    }
+    if (retval < 0) {
+        return hal_py_raise_errno(retval);
+    }
+    self = PyObject_New(hal_py_item_t, &hal_py_item_type);
+    if (self == NULL) {
+        return NULL;
+    }
+    self->is_pin = is_pin;
+    self->type = type;
+    self->dir = dir;
+    self->storage = storage;
+    snprintf(self->name, sizeof(self->name), "%s", short_name);
+    return (PyObject *)self;
+}
+
+/* item.get(): current value (port pins: buffer size). */
+static PyObject *item_get(PyObject *obj, PyObject *unused)
+{
+    hal_py_item_t *self = (hal_py_item_t *)obj;
+    hal_data_u *cell = item_cell(self);
+
+    (void)unused;
+    if (self->type == HAL_PORT) {
+        return PyLong_FromUnsignedLong(cell->p ? hal_port_buffer_size(cell->p) : 0);
+    }
+    return hal_py_from_value(self->type, cell);
+}
+
+/* item.set(v): writes v (converted per python.md) and returns v's stored value. */
+static PyObject *item_set(PyObject *obj, PyObject *value)
+{
+    hal_py_item_t *self = (hal_py_item_t *)obj;
+    hal_data_u tmp = { 0 };
+    hal_data_u *cell = item_cell(self);
+
+    if (self->type == HAL_PORT) {
+        PyErr_SetString(PyExc_RuntimeError, "cannot set the value of a port pin");
+        return NULL;
+    }
+    if (hal_py_to_value(self->type, value, &tmp) < 0) {
+        return NULL;
+    }
+    switch (self->type) {
+    case HAL_BIT: cell->b = tmp.b; break;
+    case HAL_FLOAT: cell->f = tmp.f; break;
+    case HAL_S32: cell->s = tmp.s; break;
+    case HAL_U32: cell->u = tmp.u; break;
+    case HAL_S64: cell->ls = tmp.ls; break;
+    default: cell->lu = tmp.lu; break;
+    }
+    Py_RETURN_NONE;
+}
+
+/* item.get_type() */
+static PyObject *item_get_type(PyObject *obj, PyObject *unused)
+{
+    (void)unused;
+    return PyLong_FromLong(((hal_py_item_t *)obj)->type);
+}
+
+/* item.get_dir() */
+static PyObject *item_get_dir(PyObject *obj, PyObject *unused)
+{
+    (void)unused;
+    return PyLong_FromLong(((hal_py_item_t *)obj)->dir);
+}
+
+/* item.get_name(): the short name, without prefix. */
+static PyObject *item_get_name(PyObject *obj, PyObject *unused)
+{
+    (void)unused;
+    return PyUnicode_FromString(((hal_py_item_t *)obj)->name);
+}
+
+/* item.is_pin() */
+static PyObject *item_is_pin(PyObject *obj, PyObject *unused)
+{
+    (void)unused;
+    return PyBool_FromLong(((hal_py_item_t *)obj)->is_pin);
+}
+
+/* Text of a HAL type for repr. */
+static const char *type_text(hal_type_t type)
+{
+    static const char *const names[] = { "?", "BIT", "FLOAT", "S32", "U32", "PORT", "S64", "U64" };
+    return (type >= 1 && type <= 7) ? names[type] : "?";
+}
+
+/* Text of a direction for repr. */
+static const char *dir_text(int dir)
+{
+    switch (dir) {
+    case HAL_IN: return "IN";
+    case HAL_OUT: return "OUT";
+    case HAL_IO: return "IO";
+    case HAL_RO: return "RO";
+    case HAL_RW: return "RW";
+    default: return "?";
+    }
+}
+
+/* repr: `<hal pin "x" BIT-IN>` / `<hal param "p" FLOAT-RW>`. */
+static PyObject *item_repr(PyObject *obj)
+{
+    hal_py_item_t *self = (hal_py_item_t *)obj;
+    return PyUnicode_FromFormat("<hal %s \"%s\" %s-%s>", self->is_pin ? "pin" : "param",
+                                self->name, type_text(self->type), dir_text(self->dir));
+}
+
+static PyMethodDef item_methods[] = {
+    { "get", item_get, METH_NOARGS, "Current value" },
+    { "set", item_set, METH_O, "Write a value" },
+    { "get_type", item_get_type, METH_NOARGS, "HAL type (int)" },
+    { "get_dir", item_get_dir, METH_NOARGS, "HAL direction (int)" },
+    { "get_name", item_get_name, METH_NOARGS, "Short name" },
+    { "is_pin", item_is_pin, METH_NOARGS, "True for pins" },
+    { NULL, NULL, 0, NULL },
+};
+
+PyTypeObject hal_py_item_type = {
+    PyVarObject_HEAD_INIT(NULL, 0)
+    .tp_name = "hal.item",
+    .tp_basicsize = sizeof(hal_py_item_t),
+    .tp_flags = Py_TPFLAGS_DEFAULT,
+    .tp_doc = "A pin or param of a userspace HAL component",
+    .tp_repr = item_repr,
+    .tp_methods = item_methods,
+};

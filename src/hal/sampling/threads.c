@@ -1,0 +1,106 @@
+/* threads.c: realtime module that creates up to three HAL threads (rtapi.md §6). */
+#include "rtapi.h"
+#include "rtapi_app.h"
+#include "hal.h"
+
+MODULE_AUTHOR("OpenEMC");
+MODULE_DESCRIPTION("Creates up to three HAL threads");
+MODULE_LICENSE("GPL");
+
+static char *name1 = "thread1";
+RTAPI_MP_STRING(name1, "name of thread 1");
+static long period1 = 1000000;
+RTAPI_MP_LONG(period1, "period of thread 1 (ns)");
+static int fp1 = 1;
+RTAPI_MP_INT(fp1, "thread 1 uses floating point (ignored)");
+static char *name2 = NULL;
+RTAPI_MP_STRING(name2, "name of thread 2");
+static long period2 = 0;
+RTAPI_MP_LONG(period2, "period of thread 2 (ns)");
+static int fp2 = 1;
+RTAPI_MP_INT(fp2, "thread 2 uses floating point (ignored)");
+static char *name3 = NULL;
+RTAPI_MP_STRING(name3, "name of thread 3");
+static long period3 = 0;
+RTAPI_MP_LONG(period3, "period of thread 3 (ns)");
+static int fp3 = 1;
+RTAPI_MP_INT(fp3, "thread 3 uses floating point (ignored)");
+
+#define NUM_THREADS 3
+
+static int comp_id;
+static const char *created[NUM_THREADS];
+
+/* Returns non-zero when a thread slot has a usable name and period. */
+static int thread_wanted(const char *name, long period_ns)
+{
+    return name != NULL && name[0] != '\0' && period_ns > 0;
+}
+
+/* Deletes the first `count` wanted threads of this load (error clean-up). */
+static void delete_created(char *const names[], const long periods[], int count)
+{
+    int n;
+    for (n = 0; n < count; n++) {
+        if (thread_wanted(names[n], periods[n])) {
+            hal_thread_delete(names[n]);
+        }
+    }
+}
+
+/* Module entry: registers component "threads" and creates the threads in order. */
+int rtapi_app_main(void)
+{
+    char *names[NUM_THREADS] = { name1, name2, name3 };
+    long periods[NUM_THREADS] = { period1, period2, period3 };
+    int fps[NUM_THREADS] = { fp1, fp2, fp3 };
+    int n, retval;
+
+    comp_id = hal_init("threads");
+    if (comp_id < 0) {
+        rtapi_print_msg(RTAPI_MSG_ERR, "THREADS: ERROR: hal_init() failed\n");
+        return -1;
+    }
+    for (n = 0; n < NUM_THREADS; n++) {
+        if (!thread_wanted(names[n], periods[n])) {
+            continue;
+        }
+        retval = hal_create_thread(names[n], periods[n], fps[n]);
+        created[n] = retval < 0 ? NULL : names[n];
+        if (retval < 0) {
+            rtapi_print_msg(RTAPI_MSG_ERR,
+                "THREADS: ERROR: could not create thread '%s'\n", names[n]);
+            delete_created(names, periods, n);
+            hal_exit(comp_id);
+            return -1;
+        }
+    }
+    hal_ready(comp_id);
+    return 0;
+}
+
+/* Removes the pseudo component `__<name>` of a thread, if it still exists. */
+static void remove_pseudo_comp(const char *name)
+{
+    char pseudo[HAL_NAME_LEN + 1];
+    hal_comp_info_t info;
+
+    rtapi_snprintf(pseudo, sizeof(pseudo), "__%s", name);
+    if (hal_comp_by_name(pseudo, &info) == 0) {
+        hal_exit(info.comp_id);
+    }
+}
+
+/* Module exit: removes the component and the threads' pseudo components
+ * (`<thread>.time/.tmax/.threadbeat`); the threads live until HAL shuts down. */
+void rtapi_app_exit(void)
+{
+    int n;
+    for (n = 0; n < NUM_THREADS; n++) {
+        if (created[n] != NULL) {
+            remove_pseudo_comp(created[n]);
+            created[n] = NULL;
+        }
+    }
+    hal_exit(comp_id);
+}

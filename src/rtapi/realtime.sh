@@ -1,0 +1,71 @@
+#!/bin/bash
+# realtime: start, stop, restart, query or verify this instance's rtapi_app master.
+# The instance is $OPENEMC_INSTANCE (default 0); stop removes only its shm keys.
+
+here=$(cd "$(dirname "$0")" && pwd)
+if [ -x "$here/rtapi_app" ]; then RTAPI_APP=$here/rtapi_app; else RTAPI_APP=rtapi_app; fi
+instance=${OPENEMC_INSTANCE:-0}
+case "$instance" in ''|*[!0-9]*) instance=0 ;; esac
+# numbers above 255 fold into 1..255 exactly as rtapi_instance() does
+[ "$instance" -gt 255 ] && instance=$(( 1 + instance % 255 ))
+
+# instance_key BASE: the SysV key this instance uses for a LinuxCNC base key
+instance_key() {
+    printf '0x%08x' $(( $1 ^ (instance << 24) ))
+}
+
+# remove_shm: drop the HAL, RTAPI and id-counter segments of this instance
+remove_shm() {
+    local base
+    for base in 0x48414c32 0x90280a48 0x48484c34; do
+        ipcrm -M "$(instance_key $base)" 2>/dev/null
+    done
+    return 0
+}
+
+# master_process_exists: some rtapi_app of this instance still lives
+master_process_exists() {
+    local d env
+    for d in /proc/[0-9]*; do
+        [ "$(cat "$d/comm" 2>/dev/null)" = rtapi_app ] || continue
+        env=$( (tr "\\0" "\\n" < "$d/environ") 2>/dev/null | sed -n "s/^OPENEMC_INSTANCE=//p")
+        env=${env:-0}
+        case "$env" in *[!0-9]*) env=0 ;; esac
+        [ "$env" -gt 255 ] && env=$(( 1 + env % 255 ))
+        [ "$env" = "$instance" ] && return 0
+    done
+    return 1
+}
+
+# do_stop: ask the master to exit (rtapi_app waits <= 5 s for it), then clean shm
+do_stop() {
+    local rc=0
+    if "$RTAPI_APP" ping; then
+        "$RTAPI_APP" exit || rc=1
+    fi
+    remove_shm
+    return $rc
+}
+
+# do_status: report whether the master runs and answers
+do_status() {
+    if "$RTAPI_APP" ping; then
+        echo "rtapi_app is running"
+        return 0
+    fi
+    if master_process_exists; then
+        echo "rtapi_app is running but not reachable"
+    else
+        echo "rtapi_app is not running"
+    fi
+    return 1
+}
+
+case "$1" in
+    start|load) exec "$RTAPI_APP" start ;;
+    stop|unload) do_stop ;;
+    restart) do_stop; exec "$RTAPI_APP" start ;;
+    status) do_status ;;
+    verify) exec "$RTAPI_APP" check_rt ;;
+    *) echo "Usage: $0 {start|load|stop|unload|restart|status|verify}" >&2; exit 1 ;;
+esac

@@ -1,0 +1,21 @@
+# include: #INCLUDE paths (relative to the including file, ~/), section continuity, recursion, depth, missing files.
+. "$TEST_DIR/../lib.sh"
+q -ini main.ini -var INHERITED -sec A
+q -ini main.ini -var DEEP -sec A
+q -ini main.ini -var CONTINUED -sec B
+q -ini main.ini -var FROM_PART -sec B
+q -ini main.ini -var TAB -sec C
+q -ini self.ini -var X
+q -ini loop1.ini -var X
+q -ini missing.ini -var X
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+printf 'HOMEVAL = from home\n' > "$work/home.ini"
+printf '[H]\n#INCLUDE ~/home.ini\n' > "$work/tilde.ini"
+HOME=$work q -ini "$work/tilde.ini" -var HOMEVAL
+# f0 includes f1 ... includes fN: 16 levels of nesting load, 17 are refused
+for i in $(seq 0 16); do printf '[S%d]\n#INCLUDE f%d.ini\n' $i $((i + 1)) > "$work/f$i.ini"; done
+printf 'END = 17\n' > "$work/f17.ini"
+(cd "$work" && q -ini f0.ini -var END)
+printf 'END = 16\n' > "$work/f16.ini"
+(cd "$work" && q -ini f0.ini -var END)

@@ -1,0 +1,43 @@
+# lib.sh: sourced by tests/rtapi/*/test.sh. Sets up a private RTLIB_DIR where the
+# RTAPI test modules live and rtapi_test_hal stands in for hal_lib, so these tests
+# exercise rtapi_app alone. Call rt_cleanup at the end (also run on exit).
+
+rt_top=${EMC2_HOME:-$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)}
+export PATH=$rt_top/bin:$PATH
+rt_lib=$(mktemp -d /tmp/rtapi-test.XXXXXX)
+for rt_mod in params noexit undef leak task; do
+    ln -s "$rt_top/rtlib/rtapi_test_$rt_mod.so" "$rt_lib/rtapi_test_$rt_mod.so"
+done
+ln -s "$rt_top/rtlib/rtapi_test_hal.so" "$rt_lib/hal_lib.so"
+export RTLIB_DIR=$rt_lib
+
+# rt_key BASE [INSTANCE]: SysV key of BASE for an instance (default: ours)
+rt_key() {
+    printf '0x%08x' $(( $1 ^ (${2:-${OPENEMC_INSTANCE:-0}} << 24) ))
+}
+
+# rt_reserve_instance: set rt_other to a free instance, locked like runtests does
+rt_reserve_instance() {
+    local dir=${TMPDIR:-/tmp}/openemc-instance-locks i
+    mkdir -p "$dir"
+    for i in $(seq 255 -1 1); do
+        exec {rt_other_fd}>>"$dir/$i.lock"
+        if flock -n "$rt_other_fd"; then
+            rt_other=$i
+            return 0
+        fi
+        exec {rt_other_fd}>&-
+    done
+    echo "no free instance" >&2
+    return 1
+}
+
+# rt_cleanup: stop every master this test started and remove the private rtlib
+rt_cleanup() {
+    realtime stop >/dev/null 2>&1
+    if [ -n "${rt_other:-}" ]; then
+        OPENEMC_INSTANCE=$rt_other realtime stop >/dev/null 2>&1
+    fi
+    rm -rf "$rt_lib"
+}
+trap rt_cleanup EXIT
