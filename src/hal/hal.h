@@ -263,6 +263,10 @@ typedef struct {
     struct hal_stream_shm *fifo; /* mapped segment */
 } hal_stream_t;
 
+/* key is the base key (the instance is applied inside); a stream of depth D holds
+ * D-1 records; read -> 0 or -EAGAIN when empty (underrun counted); write -> 0 or
+ * -ENOSPC when full (overrun counted, sample number not used up); depth = records
+ * queued now; maxdepth = the creation depth D; typestring letters f/r b s u l k. */
 extern int hal_stream_create(hal_stream_t *stream, int comp_id, int key, int depth, const char *typestring);
 extern void hal_stream_destroy(hal_stream_t *stream);
 extern int hal_stream_attach(hal_stream_t *stream, int comp_id, int key, const char *typestring);

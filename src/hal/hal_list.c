@@ -111,20 +111,30 @@ static int hal_walk(int first, void (*get)(void *, hal_type_t *, int *), hal_lis
     return rc;
 }
 
-/* Type/dir extractors for hal_walk. */
+/* Type/dir of a pin for hal_walk. */
 static void get_pin(void *o, hal_type_t *t, int *d) { *t = ((hal_pin_t *)o)->type; *d = ((hal_pin_t *)o)->dir; }
+/* Type/dir of a param. */
 static void get_param(void *o, hal_type_t *t, int *d) { *t = ((hal_param_t *)o)->type; *d = ((hal_param_t *)o)->dir; }
+/* Type of a signal. */
 static void get_sig(void *o, hal_type_t *t, int *d) { *t = ((hal_sig_t *)o)->type; *d = 0; }
+/* Id of a comp (as dir). */
 static void get_comp(void *o, hal_type_t *t, int *d) { *t = 0; *d = ((hal_comp_t *)o)->comp_id; }
+/* Users of a funct (as dir). */
 static void get_funct(void *o, hal_type_t *t, int *d) { *t = 0; *d = ((hal_funct_t *)o)->users; }
+/* Nothing extra (threads). */
 static void get_none(void *o, hal_type_t *t, int *d) { (void)o; *t = 0; *d = 0; }
 
-/* Public list walks (see hal.h). */
+/* Walk pins (see hal.h). */
 int hal_list_p(hal_list_cb_t cb, void *ctx) { return hal_walk(hal_data ? hal_data->pins.list_ptr : 0, get_pin, cb, ctx); }
+/* Walk params. */
 int hal_list_p_s(hal_list_cb_t cb, void *ctx) { return hal_walk(hal_data ? hal_data->params.list_ptr : 0, get_param, cb, ctx); }
+/* Walk signals. */
 int hal_list_s(hal_list_cb_t cb, void *ctx) { return hal_walk(hal_data ? hal_data->sigs.list_ptr : 0, get_sig, cb, ctx); }
+/* Walk comps, newest first. */
 int hal_list_comp(hal_list_cb_t cb, void *ctx) { return hal_walk(hal_data ? hal_data->comps.list_ptr : 0, get_comp, cb, ctx); }
+/* Walk functs. */
 int hal_list_funct(hal_list_cb_t cb, void *ctx) { return hal_walk(hal_data ? hal_data->functs.list_ptr : 0, get_funct, cb, ctx); }
+/* Walk threads, newest first. */
 int hal_list_thread(hal_list_cb_t cb, void *ctx) { return hal_walk(hal_data ? hal_data->threads.list_ptr : 0, get_none, cb, ctx); }
 
 /* Copy the public facts of a component. */

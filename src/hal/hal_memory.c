@@ -222,13 +222,17 @@ void *halpr_obj_alloc(int kind)
     return obj;
 }
 
-/* Return an object to its kind's free list. Mutex held. */
+/* Return an object to its kind's free list. Mutex held.  Thread entries are
+ * never reused: a running thread may still be walking a just-removed one. */
 void halpr_obj_free(int kind, void *obj)
 {
     hal_kind_t *k = &hal_data->kinds[kind];
 
-    if (kind != HAL_KIND_ENTRY)
-        memset(obj, 0, hal_kind_size[kind]);
+    if (kind == HAL_KIND_ENTRY) {
+        k->active--;
+        return;
+    }
+    memset(obj, 0, hal_kind_size[kind]);
     *(int *)obj = k->free_ptr;
     k->free_ptr = SHMOFF(obj);
     k->active--;

@@ -79,30 +79,35 @@ int hal_param_bit_set(const char *name, int value)
     return hal_param_set(name, HAL_BIT, (void *)&v);
 }
 
+/* Set a float param by name. */
 int hal_param_float_set(const char *name, double value)
 {
     hal_float_t v = value;
     return hal_param_set(name, HAL_FLOAT, (void *)&v);
 }
 
+/* Set a u32 param by name. */
 int hal_param_u32_set(const char *name, unsigned long value)
 {
     hal_u32_t v = value;
     return hal_param_set(name, HAL_U32, (void *)&v);
 }
 
+/* Set a s32 param by name. */
 int hal_param_s32_set(const char *name, signed long value)
 {
     hal_s32_t v = value;
     return hal_param_set(name, HAL_S32, (void *)&v);
 }
 
+/* Set a u64 param by name. */
 int hal_param_u64_set(const char *name, uint64_t value)
 {
     hal_u64_t v = value;
     return hal_param_set(name, HAL_U64, (void *)&v);
 }
 
+/* Set a s64 param by name. */
 int hal_param_s64_set(const char *name, int64_t value)
 {
     hal_s64_t v = value;

@@ -45,6 +45,11 @@
  * to the head of the comp list (as a fresh hal_init would) and returns the
  * component's NEW id (use it from then on).
  *
+ * Threads exist only in rtapi_app.  Each has a pseudo comp __<name>
+ * (is_thread_comp) owning <name>.time/.tmax/.threadbeat; when the RT comp
+ * that created threads (e.g. `threads`) exits, those pseudo comps go too,
+ * while the threads keep running until hal_lib is unloaded (hal.md §8).
+ *
  * halcmd after a successful loadrt stores the args with halpr_set_insmod_args().
  */
 
@@ -54,7 +59,7 @@
 extern "C" {
 #endif
 
-#define HAL_DATA_VERSION 0x4f450014          /* must match or attach fails (-EPROTO) */
+#define HAL_DATA_VERSION 0x4f450015          /* must match or attach fails (-EPROTO) */
 #define HAL_DEFAULT_SIZE (32L * 1024 * 1024)   /* arena size without $OPENEMC_HAL_SIZE */
 #define HAL_MIN_SIZE (256L * 1024)             /* smallest accepted $OPENEMC_HAL_SIZE */
 
@@ -207,7 +212,7 @@ typedef struct {
 
 /* one function slot in a thread (cached for the realtime cycle) */
 typedef struct {
-    int free_link;              /* free-list link (a freed entry stays intact for the cycle) */
+    int free_link;              /* unused: entries are never recycled (the cycle may still walk one) */
     int next_ptr;               /* next entry in run order */
     int funct_ptr;              /* offset of hal_funct_t */
     void (*funct)(void *, long);

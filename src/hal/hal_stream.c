@@ -200,7 +200,9 @@ int hal_stream_maxdepth(hal_stream_t *stream)
     return stream->fifo->depth;
 }
 
+/* Reads attempted on an empty stream. */
 int hal_stream_num_underruns(hal_stream_t *stream) { return stream->fifo->num_underruns; }
+/* Writes attempted on a full stream. */
 int hal_stream_num_overruns(hal_stream_t *stream) { return stream->fifo->num_overruns; }
 
 /* Non-zero when a record can be read. */

@@ -226,8 +226,8 @@ int hal_thread_delete(const char *name)
     hal_thread_t *t;
     int rc;
 
-    if (!hal_data) {
-        HAL_ERR("thread_delete called before init\n");
+    if (!hal_data || !hal_proc_is_rt) {
+        HAL_ERR("thread_delete called from a non-realtime process\n");
         return -EINVAL;
     }
     if (hal_data->lock & HAL_LOCK_CONFIG) {

@@ -24,6 +24,7 @@ static void reply_vappend(app_reply_t *reply, const char *fmt, va_list ap)
         reply->len += (size_t)n < room ? (size_t)n : room - 1;
 }
 
+/* Append text for the client's stdout. */
 void app_say(app_reply_t *reply, const char *fmt, ...)
 {
     va_list ap;
@@ -33,6 +34,7 @@ void app_say(app_reply_t *reply, const char *fmt, ...)
     va_end(ap);
 }
 
+/* Log an error on our stderr; repeat it in the reply for clients elsewhere. */
 void app_error(app_reply_t *reply, const char *fmt, ...)
 {
     va_list ap;
@@ -162,6 +164,7 @@ static const struct {
     { "newinst", cmd_newinst }, { "list", cmd_list }, { "check_rt", cmd_check_rt },
 };
 
+/* Look the command up and run it with the tasks held off. */
 int app_dispatch(app_reply_t *reply, int argc, char **argv, int *exit_requested)
 {
     int rc;

@@ -43,10 +43,15 @@ static int wait_for_master(pid_t pid)
 
     if (rtapi_app_command(1, argv, 0, NULL, 0) == 0)
         return 0;
-    if (waitpid(pid, &status, WNOHANG) == pid)
-        fprintf(stderr, "rtapi_app: master failed to start\n");
-    else
-        fprintf(stderr, "rtapi_app: master does not answer\n");
+    for (int i = 0; i < 100; i++) {
+        struct timespec tick = { 0, 10 * 1000000L };
+        if (waitpid(pid, &status, WNOHANG) == pid) {
+            fprintf(stderr, "rtapi_app: master failed to start\n");
+            return 1;
+        }
+        nanosleep(&tick, NULL);
+    }
+    fprintf(stderr, "rtapi_app: master does not answer\n");
     return 1;
 }
 
@@ -127,6 +132,7 @@ static int do_check_rt(void)
     return rtapi_is_realtime() ? 0 : 1;
 }
 
+/* rtapi_app entry: dispatch on the first argument. */
 int main(int argc, char **argv)
 {
     if (argc < 2)

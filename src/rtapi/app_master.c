@@ -77,6 +77,7 @@ static void shut_down(void)
     for (int id = 0; id < RTAPI_MAX_TASKS; id++)
         rtapi_task_delete(id);
     rtapi_tasks_unlock();
+    rtapi_msg_flush();
 }
 
 /* Read, run and answer one request; a broken request is dropped. */
@@ -105,6 +106,8 @@ static void serve_connection(int fd, int *exit_requested)
     result = app_dispatch(&reply, argc, argv, exit_requested);
     if (*exit_requested)
         shut_down();
+    fflush(stdout);
+    fflush(stderr);
     len = rtapi_wire_encode_reply(result, reply.text, msg, sizeof msg);
     rtapi_wire_send(fd, msg, (size_t)len);
 }
@@ -129,6 +132,7 @@ static int start_up(void)
     char *argv[] = { "hal_lib", NULL };
 
     reply.peer_shares_stderr = 1;
+    setvbuf(stdout, NULL, _IOLBF, 0);
     install_signals();
     rtapi_rt_announce();
     rtapi_rt_harden();
@@ -143,6 +147,7 @@ static int start_up(void)
     return 0;
 }
 
+/* Master main loop: serve one connection at a time until exit or SIGTERM. */
 int app_master_run(int listen_fd)
 {
     int exit_requested = 0;

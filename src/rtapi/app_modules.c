@@ -125,6 +125,7 @@ static void free_module(app_module_t *m)
     free(m);
 }
 
+/* Load a module: name checks, dlopen, parameters, rtapi_app_main. */
 int app_load(app_reply_t *reply, int argc, char **argv)
 {
     int (*main_fn)(void) = NULL;
@@ -172,6 +173,7 @@ static void remove_module(app_module_t *m)
     free_module(m);
 }
 
+/* Unload one module by name. */
 int app_unload(app_reply_t *reply, const char *name)
 {
     app_module_t *m = find_module(name);
@@ -198,11 +200,13 @@ static void list_from(app_reply_t *reply, app_module_t *m)
     app_say(reply, "%s\n", m->name);
 }
 
+/* List loaded modules, oldest first. */
 void app_list(app_reply_t *reply)
 {
     list_from(reply, modules);
 }
 
+/* Unload all modules, hal_lib last. */
 void app_unload_all(void)
 {
     app_module_t *hal = find_module(HAL_LIB_NAME);
@@ -219,6 +223,7 @@ void app_unload_all(void)
         remove_module(hal);
 }
 
+/* Make liblinuxcnchal's symbols global for modules. */
 void app_preload_hal_library(void)
 {
     Dl_info info;

@@ -2,11 +2,13 @@
 #include <string.h>
 #include "latency_hist.h"
 
+/* Clear all counts. */
 void latency_hist_reset(latency_hist_t *h)
 {
     memset(h, 0, sizeof *h);
 }
 
+/* Count one sample. */
 void latency_hist_add(latency_hist_t *h, long long ns)
 {
     long long bucket;
@@ -25,6 +27,7 @@ void latency_hist_add(latency_hist_t *h, long long ns)
         h->counts[bucket]++;
 }
 
+/* Walk the buckets up to the wanted fraction. */
 long long latency_hist_percentile(const latency_hist_t *h, double fraction)
 {
     unsigned long long need, seen = 0;

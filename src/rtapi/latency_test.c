@@ -121,6 +121,18 @@ static double parse_seconds(const char *text)
     return (end == text || *end || !(s > 0) || !isfinite(s)) ? -1 : s;
 }
 
+/* Give each thread up to 5 s more to record its first sample (loaded hosts). */
+static void wait_for_samples(latency_thread_t *threads, int n)
+{
+    struct timespec tick = { 0, 10000000L };
+
+    for (int i = 0; i < n; i++) {
+        const unsigned long long *samples = &threads[i].hist.samples;
+        for (int t = 0; t < 500 && __atomic_load_n(samples, __ATOMIC_ACQUIRE) == 0; t++)
+            nanosleep(&tick, NULL);
+    }
+}
+
 /* Run the threads for the given time, then stop them and collect overruns. */
 static int run(latency_thread_t *threads, int n, double seconds)
 {
@@ -139,6 +151,7 @@ static int run(latency_thread_t *threads, int n, double seconds)
     measuring = 1;
     while (nanosleep(&ts, &ts) != 0)
         ;
+    wait_for_samples(threads, n);
     measuring = 0;
     for (int i = 0; i < n; i++) {
         rtapi_task_stats_t st;
@@ -149,6 +162,7 @@ static int run(latency_thread_t *threads, int n, double seconds)
     return 0;
 }
 
+/* Parse the command line, run the threads, print the report. */
 int main(int argc, char **argv)
 {
     static latency_thread_t threads[2] = { { "base", 25000, -1, { 0 }, 0 },

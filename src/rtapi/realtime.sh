@@ -23,26 +23,50 @@ remove_shm() {
     return 0
 }
 
-# master_process_exists: some rtapi_app of this instance still lives
-master_process_exists() {
-    local d env
+# master_pids: pids of live rtapi_app processes of this instance
+master_pids() {
+    local d env state
     for d in /proc/[0-9]*; do
         [ "$(cat "$d/comm" 2>/dev/null)" = rtapi_app ] || continue
+        state=$(sed -n 's/^State:[[:space:]]*\(.\).*/\1/p' "$d/status" 2>/dev/null)
+        [ -n "$state" ] && [ "$state" != Z ] || continue
         env=$( (tr "\\0" "\\n" < "$d/environ") 2>/dev/null | sed -n "s/^OPENEMC_INSTANCE=//p")
         env=${env:-0}
         case "$env" in *[!0-9]*) env=0 ;; esac
         [ "$env" -gt 255 ] && env=$(( 1 + env % 255 ))
-        [ "$env" = "$instance" ] && return 0
+        [ "$env" = "$instance" ] && echo "${d#/proc/}"
     done
+}
+
+# master_process_exists: some rtapi_app of this instance still lives
+master_process_exists() {
+    [ -n "$(master_pids)" ]
+}
+
+# kill_unreachable: a master that no longer answers gets SIGTERM, then SIGKILL
+kill_unreachable() {
+    local pids i
+    pids=$(master_pids)
+    [ -n "$pids" ] || return 0
+    kill -TERM $pids 2>/dev/null
+    kill -CONT $pids 2>/dev/null
+    for ((i = 0; i < 50; i++)); do
+        [ -n "$(master_pids)" ] || return 0
+        sleep 0.1
+    done
+    echo "ERROR: rtapi_app failed to die" >&2
+    kill -KILL $(master_pids) 2>/dev/null
     return 1
 }
 
-# do_stop: ask the master to exit (rtapi_app waits <= 5 s for it), then clean shm
+# do_stop: ask the master to exit (rtapi_app waits <= 5 s for it), stop an
+# unreachable one, then remove this instance's shm
 do_stop() {
     local rc=0
     if "$RTAPI_APP" ping; then
         "$RTAPI_APP" exit || rc=1
     fi
+    kill_unreachable || rc=1
     remove_shm
     return $rc
 }

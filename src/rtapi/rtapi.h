@@ -166,16 +166,17 @@ typedef struct {
 #define RTAPI_CAT_(a, b) RTAPI_CAT2_(a, b)
 #ifdef __cplusplus
 #define RTAPI_STATIC_ASSERT_(cond, msg) static_assert(cond, msg)
+#define RTAPI_MP_LINKAGE_ extern "C"
 #else
 #define RTAPI_STATIC_ASSERT_(cond, msg) _Static_assert(cond, msg)
+#define RTAPI_MP_LINKAGE_
 #endif
 
 #define RTAPI_MP_INFO_(var, letter, n, ctype, desc) \
     RTAPI_STATIC_ASSERT_((n) ? sizeof(var) >= (n) * sizeof(ctype) \
                              : sizeof(var) == sizeof(ctype), \
                          "module parameter " #var " has the wrong type or size"); \
-    extern RTAPI_VISIBLE const rtapi_param_info_t rtapi_info_##var; \
-    RTAPI_VISIBLE const rtapi_param_info_t rtapi_info_##var = \
+    RTAPI_MP_LINKAGE_ RTAPI_VISIBLE const rtapi_param_info_t rtapi_info_##var = \
         { #var, letter, n, (void *)&(var), desc }
 
 #define RTAPI_MP_INT(var, desc) RTAPI_MP_INFO_(var, 'i', 0, int, desc)

@@ -16,6 +16,7 @@
 
 #define CONNECT_WAIT_MS 3000
 #define REPLY_TIMEOUT_MS 60000
+#define PING_TIMEOUT_MS 3000
 
 extern char **environ;
 
@@ -91,7 +92,7 @@ static int connect_master(int autostart)
 
 /* Send one request on fd and read the reply. */
 static int exchange(int fd, int argc, const char *const argv[], char *reply,
-                    size_t reply_size)
+                    size_t reply_size, int timeout_ms)
 {
     static unsigned char buf[RTAPI_WIRE_MAX];
     int len, result = -EPROTO;
@@ -103,10 +104,9 @@ static int exchange(int fd, int argc, const char *const argv[], char *reply,
     }
     if (rtapi_wire_send(fd, buf, (size_t)len) < 0)
         return -ECONNRESET;
-    len = rtapi_wire_recv(fd, buf, sizeof buf, REPLY_TIMEOUT_MS);
+    len = rtapi_wire_recv(fd, buf, sizeof buf, timeout_ms);
     if (len == -ETIMEDOUT)
-        fprintf(stderr, "rtapi_app: no reply from master within %d s\n",
-                REPLY_TIMEOUT_MS / 1000);
+        fprintf(stderr, "rtapi_app: no reply from master within %d s\n", timeout_ms / 1000);
     else if (len < 0)
         fprintf(stderr, "rtapi_app: master closed the connection without a reply\n");
     if (len < 0)
@@ -118,6 +118,7 @@ static int exchange(int fd, int argc, const char *const argv[], char *reply,
     return result;
 }
 
+/* Run one command on the master (see rtapi_client.h). */
 int rtapi_app_command(int argc, const char *const argv[], int autostart,
                       char *reply, size_t reply_size)
 {
@@ -130,11 +131,14 @@ int rtapi_app_command(int argc, const char *const argv[], int autostart,
     fd = connect_master(autostart);
     if (fd < 0)
         return fd;
-    result = exchange(fd, argc, argv, reply, reply_size);
+    result = exchange(fd, argc, argv, reply, reply_size,
+                      argc > 0 && strcmp(argv[0], "ping") == 0 ? PING_TIMEOUT_MS
+                                                               : REPLY_TIMEOUT_MS);
     close(fd);
     return result;
 }
 
+/* Ping the master. */
 int rtapi_app_running(void)
 {
     const char *argv[] = { "ping" };
@@ -142,6 +146,7 @@ int rtapi_app_running(void)
     return rtapi_app_command(1, argv, 0, NULL, 0) == 0;
 }
 
+/* Master pid via SO_PEERCRED of a throw-away connection. */
 int rtapi_app_master_pid(void)
 {
     struct ucred cred;

@@ -3,6 +3,7 @@
 #define RTAPI_INTERNAL_H
 
 #include <pthread.h>
+#include <stdarg.h>
 
 /* Non-zero when tasks use SCHED_FIFO (decided once per process). */
 int rtapi_rt_enabled(void);
@@ -15,6 +16,13 @@ int rtapi_rt_cpu(void);
 
 
 #include "rtapi.h"
+
+/* Start the realtime message queue and its 10 ms writer thread (once). */
+void rtapi_msg_queue_start(void);
+/* Queue a message from a realtime task; 0, or -1 when the queue is full. */
+int rtapi_msg_queue(int level, const char *fmt, va_list ap);
+/* Write out everything queued so far. */
+void rtapi_msg_flush(void);
 
 /* One task slot; tasks[] lives in rtapi_task.c. */
 typedef struct {

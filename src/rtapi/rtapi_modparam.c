@@ -131,6 +131,7 @@ static int apply_clean(char *arg, rtapi_modparam_lookup_t lookup, void *ctx,
     return 0;
 }
 
+/* Apply one argument after deleting its quotes. */
 int rtapi_modparam_apply(const char *arg, rtapi_modparam_lookup_t lookup, void *ctx,
                          rtapi_modparam_strings_t *strings, char *err, size_t errlen)
 {
@@ -147,6 +148,7 @@ int rtapi_modparam_apply(const char *arg, rtapi_modparam_lookup_t lookup, void *
     return rc;
 }
 
+/* Free the strings kept for a module. */
 void rtapi_modparam_free(rtapi_modparam_strings_t *strings)
 {
     for (int i = 0; i < strings->count; i++)

@@ -2,6 +2,7 @@
 #include <stdio.h>
 #include <stdarg.h>
 #include "rtapi.h"
+#include "rtapi_internal.h"
 
 static int msg_level = RTAPI_MSG_ERR;
 static rtapi_msg_handler_t msg_handler;
@@ -16,11 +17,16 @@ static void default_handler(msg_level_t level, const char *fmt, va_list ap)
     fflush(out);
 }
 
-/* Send one message to the current handler. */
+/* Send one message to the current handler; SCHED_FIFO tasks using the default
+   sink queue it instead, so they never block in I/O. */
 static void emit(msg_level_t level, const char *fmt, va_list ap)
 {
     rtapi_msg_handler_t handler = msg_handler ? msg_handler : default_handler;
 
+    if (!msg_handler && rtapi_self_task >= 0 && rtapi_rt_enabled()) {
+        rtapi_msg_queue(level, fmt, ap);
+        return;
+    }
     handler(level, fmt, ap);
 }
 

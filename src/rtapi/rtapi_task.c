@@ -106,6 +106,8 @@ int rtapi_task_start(int task_id, unsigned long int period_nsec)
         return -EINVAL;
     rtapi_rt_announce();
     rtapi_rt_harden();
+    if (rtapi_rt_enabled())
+        rtapi_msg_queue_start();
     task->period_ns = (long long)period_nsec;
     task->stats.period_ns = task->period_ns;
     task->wake_time = rtapi_get_time();

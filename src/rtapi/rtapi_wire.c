@@ -23,6 +23,7 @@ static unsigned get16(const unsigned char *p)
     return p[0] | (p[1] << 8);
 }
 
+/* Encode argv as a request frame. */
 int rtapi_wire_encode_request(int argc, const char *const argv[], unsigned char *buf,
                               size_t size)
 {
@@ -43,6 +44,7 @@ int rtapi_wire_encode_request(int argc, const char *const argv[], unsigned char 
     return (int)pos;
 }
 
+/* Decode and validate every length field of a request frame. */
 int rtapi_wire_decode_request(const unsigned char *msg, size_t len, char *store,
                               char **argv, int max_args)
 {
@@ -73,6 +75,7 @@ int rtapi_wire_decode_request(const unsigned char *msg, size_t len, char *store,
     return (int)argc;
 }
 
+/* Encode a reply frame (text truncated to fit). */
 int rtapi_wire_encode_reply(int result, const char *text, unsigned char *buf, size_t size)
 {
     size_t tlen = text ? strlen(text) : 0;
@@ -90,6 +93,7 @@ int rtapi_wire_encode_reply(int result, const char *text, unsigned char *buf, si
     return (int)(8 + tlen);
 }
 
+/* Decode and validate a reply frame. */
 int rtapi_wire_decode_reply(const unsigned char *msg, size_t len, int *result, char *text,
                             size_t text_size)
 {
@@ -136,6 +140,7 @@ static int read_full(int fd, unsigned char *buf, size_t len, int timeout_ms)
     return 0;
 }
 
+/* Receive one frame, validating its total length before reading the rest. */
 int rtapi_wire_recv(int fd, unsigned char *buf, size_t size, int timeout_ms)
 {
     unsigned total;
@@ -150,6 +155,7 @@ int rtapi_wire_recv(int fd, unsigned char *buf, size_t size, int timeout_ms)
     return rc < 0 ? rc : (int)total;
 }
 
+/* Send a whole frame. */
 int rtapi_wire_send(int fd, const unsigned char *buf, size_t len)
 {
     while (len > 0) {
@@ -177,6 +183,7 @@ static int socket_address(struct sockaddr_un *addr)
     return (int)(offsetof(struct sockaddr_un, sun_path) + 1 + len);
 }
 
+/* Connect to this instance's master. */
 int rtapi_wire_connect(void)
 {
     struct sockaddr_un addr;
@@ -196,6 +203,7 @@ int rtapi_wire_connect(void)
     return fd;
 }
 
+/* Become this instance's master socket (fails when one is bound). */
 int rtapi_wire_listen(void)
 {
     struct sockaddr_un addr;

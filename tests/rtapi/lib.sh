@@ -10,6 +10,9 @@ for rt_mod in params noexit undef leak task; do
 done
 ln -s "$rt_top/rtlib/rtapi_test_hal.so" "$rt_lib/hal_lib.so"
 export RTLIB_DIR=$rt_lib
+# runtests gives this test its instance exclusively: a master answering on it is
+# debris of an earlier run, which would serve the wrong RTLIB_DIR
+realtime stop >/dev/null 2>&1
 
 # rt_key BASE [INSTANCE]: SysV key of BASE for an instance (default: ours)
 rt_key() {
@@ -24,12 +27,26 @@ rt_reserve_instance() {
         exec {rt_other_fd}>>"$dir/$i.lock"
         if flock -n "$rt_other_fd"; then
             rt_other=$i
+            OPENEMC_INSTANCE=$i realtime stop >/dev/null 2>&1
             return 0
         fi
         exec {rt_other_fd}>&-
     done
     echo "no free instance" >&2
     return 1
+}
+
+# rt_master_pid: pid of the rtapi_app master serving our instance (empty if none)
+rt_master_pid() {
+    local p
+    for p in $(pgrep -x rtapi_app); do
+        if grep -qx "OPENEMC_INSTANCE=$OPENEMC_INSTANCE" \
+            <( (tr '\0' '\n' < "/proc/$p/environ") 2>/dev/null) &&
+            grep -q '^[^Z]' <(sed -n 's/^State:\s*//p' "/proc/$p/status" 2>/dev/null); then
+            echo "$p"
+            return 0
+        fi
+    done
 }
 
 # rt_cleanup: stop every master this test started and remove the private rtlib

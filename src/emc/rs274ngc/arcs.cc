@@ -27,7 +27,7 @@ PlaneAxes plane_axes(CanonPlane p)
 // "(X1.0000,Y2.0000)" for a message
 std::string point_text(const PlaneAxes &pa, double a, double b)
 {
-    char buf[96];
+    char buf[800];
     snprintf(buf, sizeof buf, "(%c%.4f,%c%.4f)", pa.name1, a, pa.name2, b);
     return buf;
 }
@@ -74,7 +74,7 @@ void Interp::arc_center_ijk(const Block &b, double s1, double s2, double e1, dou
     double rtol = s_.units == CANON_UNITS_INCHES ? 0.00005 : 0.00127;
     double ctol = s_.units == CANON_UNITS_INCHES ? 2 * 0.001 * M_SQRT2 : 2 * 0.01 * M_SQRT2;
     double r1 = std::hypot(s1 - c1, s2 - c2), r2 = std::hypot(e1 - c1, e2 - c2);
-    char buf[512];
+    char buf[2048];
     std::string pts = "start=" + point_text(pa, s1, s2) + " center=" + point_text(pa, c1, c2) +
                       " end=" + point_text(pa, e1, e2);
     if (r1 < rtol || r2 < rtol) {
@@ -117,7 +117,7 @@ void Interp::move_arc(const Block &b, int mode)
     int turns = 1;
     if (b.word('p')) {
         double p = b.value('p');
-        turns = (int)std::nearbyint(p);
+        turns = clamp_int(p);
         if (turns < 1 || std::fabs(p - turns) > 0.0001)
             throw InterpError("P word is not a positive integer");
     }

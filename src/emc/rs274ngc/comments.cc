@@ -23,7 +23,7 @@ bool keyword(const std::string &c, const char *kw, std::string &rest)
 // format one value with the current format (decimals < 0: "%lf")
 std::string format_value(double v, int decimals)
 {
-    char buf[64];
+    char buf[400];
     if (decimals < 0) decimals = 6;
     snprintf(buf, sizeof buf, "%.*f", decimals, v);
     std::string s = buf;

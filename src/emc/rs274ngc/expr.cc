@@ -11,15 +11,17 @@ namespace {
 constexpr double DEG = M_PI / 180.0;
 constexpr double EQ_TOL = 1e-6;
 
-// precedence of a binary operator (gcode.md §7 levels), 0 if not an operator
-int precedence(const std::string &op)
+// precedence of a binary operator (gcode.md §7 levels); OP_END is 0
+int precedence(BinOp op)
 {
-    if (op == "**") return 5;
-    if (op == "*" || op == "/" || op == "mod") return 4;
-    if (op == "+" || op == "-") return 3;
-    if (op == "eq" || op == "ne" || op == "gt" || op == "ge" || op == "lt" || op == "le") return 2;
-    if (op == "and" || op == "or" || op == "xor") return 1;
-    return 0;
+    switch (op) {
+    case OP_POW: return 5;
+    case OP_MUL: case OP_DIV: case OP_MOD: return 4;
+    case OP_ADD: case OP_SUB: return 3;
+    case OP_EQ: case OP_NE: case OP_GT: case OP_GE: case OP_LT: case OP_LE: return 2;
+    case OP_AND: case OP_OR: case OP_XOR: return 1;
+    default: return 0;
+    }
 }
 
 // apply a one-argument function by name
@@ -71,16 +73,49 @@ double checked(double v)
 
 } // namespace
 
+// Exactly rounded fast path for short decimals (mantissa < 2^53, <= 22 decimals); false otherwise.
+static bool fast_decimal(const char *p, const char *end, double &v)
+{
+    bool neg = *p == '-';
+    if (*p == '+' || *p == '-') p++;
+    unsigned long long mant = 0;
+    int digits = 0, decimals = 0, points = 0;
+    for (; p < end; p++) {
+        if (*p == '.') {
+            if (++points > 1) return false;
+            continue;
+        }
+        if (digits == 0 && *p == '0' && !points) continue;
+        if (++digits > 15) return false;
+        mant = mant * 10 + (unsigned)(*p - '0');
+        if (points) decimals++;
+    }
+    if (points && digits == 0) return false;
+    static const double pow10[] = {1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11,
+                                   1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21,
+                                   1e22};
+    if (decimals > 22) return false;
+    v = (double)mant / pow10[decimals];
+    if (neg) v = -v;
+    return true;
+}
+
 // Read a number: optional sign, digits and at most one point, at least one digit.
 double Interp::read_number(const std::string &t, size_t &pos)
 {
     size_t start = pos;
     if (pos < t.size() && (t[pos] == '+' || t[pos] == '-')) pos++;
-    while (pos < t.size() && (isdigit((unsigned char)t[pos]) || t[pos] == '.')) pos++;
+    bool digit = false;
+    int points = 0;
+    for (; pos < t.size() && (isdigit((unsigned char)t[pos]) || t[pos] == '.'); pos++) {
+        if (t[pos] == '.') points++;
+        else digit = true;
+    }
+    double fast;
+    if (digit && points <= 1 && fast_decimal(t.data() + start, t.data() + pos, fast)) return fast;
     std::string text = t.substr(start, pos - start);
     const char *c = text.c_str();
     char *end = nullptr;
-    bool digit = strpbrk(c, "0123456789") != nullptr;
     double v = digit ? strtod(c, &end) : 0.0;
     if (!digit || end == c)
         throw InterpError("bad number format (conversion failed) parsing '" + text + "'");
@@ -140,62 +175,65 @@ double Interp::read_unary(const std::string &t, size_t &pos)
     return checked(apply_unary(name, v));
 }
 
-// Read a binary operator name at pos (symbols or lower-case words).
-std::string Interp::read_operator(const std::string &t, size_t &pos)
+// Read a binary operator at pos (symbols or lower-case words); ']' gives OP_END.
+BinOp Interp::read_operator(const std::string &t, size_t &pos)
 {
     if (pos >= t.size()) throw InterpError("Unclosed expression");
     char c = t[pos];
-    if (c == '*') {
-        bool pow = pos + 1 < t.size() && t[pos + 1] == '*';
-        pos += pow ? 2 : 1;
-        return pow ? "**" : "*";
-    }
-    if (c == '/' || c == '+' || c == '-') {
+    switch (c) {
+    case '*':
+        if (pos + 1 < t.size() && t[pos + 1] == '*') { pos += 2; return OP_POW; }
         pos++;
-        return std::string(1, c);
+        return OP_MUL;
+    case '/': pos++; return OP_DIV;
+    case '+': pos++; return OP_ADD;
+    case '-': pos++; return OP_SUB;
+    case ']': return OP_END;
+    default: break;
     }
-    static const char *const words[] = {"mod", "and", "xor", "or", "eq", "ne", "gt",
-                                        "ge", "lt", "le"};
-    for (const char *w : words) {
-        if (t.compare(pos, strlen(w), w) == 0) {
-            pos += strlen(w);
-            return w;
+    static const struct { const char *name; BinOp op; } words[] = {
+        {"mod", OP_MOD}, {"and", OP_AND}, {"xor", OP_XOR}, {"or", OP_OR}, {"eq", OP_EQ},
+        {"ne", OP_NE}, {"gt", OP_GT}, {"ge", OP_GE}, {"lt", OP_LT}, {"le", OP_LE}};
+    for (const auto &w : words) {
+        size_t n = strlen(w.name);
+        if (t.compare(pos, n, w.name) == 0) {
+            pos += n;
+            return w.op;
         }
     }
-    if (c == ']') return "]";
     throw InterpError(std::string("Unknown operation name starting with ") +
                       (char)toupper((unsigned char)c));
 }
 
 // Apply a binary operator.
-double Interp::eval_binary(double a, const std::string &op, double b)
+double Interp::eval_binary(double a, BinOp op, double b)
 {
-    if (op == "**") {
+    switch (op) {
+    case OP_POW:
         if (a < 0.0 && std::floor(b) != b)
             throw InterpError("Attempt to raise negative to non integer power");
         return checked(std::pow(a, b));
-    }
-    if (op == "*") return checked(a * b);
-    if (op == "/") {
+    case OP_MUL: return checked(a * b);
+    case OP_DIV:
         if (b == 0.0) throw InterpError("Attempt to divide by zero");
         return checked(a / b);
-    }
-    if (op == "mod") {
+    case OP_MOD: {
         if (b == 0.0) throw InterpError("Attempt to divide by zero");
         double r = std::fmod(a, b);
         return r < 0.0 ? r + std::fabs(b) : r;
     }
-    if (op == "+") return checked(a + b);
-    if (op == "-") return checked(a - b);
-    if (op == "eq") return std::fabs(a - b) < EQ_TOL ? 1 : 0;
-    if (op == "ne") return std::fabs(a - b) >= EQ_TOL ? 1 : 0;
-    if (op == "gt") return a > b ? 1 : 0;
-    if (op == "ge") return (a > b || std::fabs(a - b) < EQ_TOL) ? 1 : 0;
-    if (op == "lt") return a < b ? 1 : 0;
-    if (op == "le") return (a < b || std::fabs(a - b) < EQ_TOL) ? 1 : 0;
-    if (op == "and") return (a != 0.0 && b != 0.0) ? 1 : 0;
-    if (op == "or") return (a != 0.0 || b != 0.0) ? 1 : 0;
-    return ((a != 0.0) != (b != 0.0)) ? 1 : 0;
+    case OP_ADD: return checked(a + b);
+    case OP_SUB: return checked(a - b);
+    case OP_EQ: return std::fabs(a - b) < EQ_TOL ? 1 : 0;
+    case OP_NE: return std::fabs(a - b) >= EQ_TOL ? 1 : 0;
+    case OP_GT: return a > b ? 1 : 0;
+    case OP_GE: return (a > b || std::fabs(a - b) < EQ_TOL) ? 1 : 0;
+    case OP_LT: return a < b ? 1 : 0;
+    case OP_LE: return (a < b || std::fabs(a - b) < EQ_TOL) ? 1 : 0;
+    case OP_AND: return (a != 0.0 && b != 0.0) ? 1 : 0;
+    case OP_OR: return (a != 0.0 || b != 0.0) ? 1 : 0;
+    default: return ((a != 0.0) != (b != 0.0)) ? 1 : 0;
+    }
 }
 
 // Evaluate "[ ... ]" starting at the '[' with left-associative precedence levels.
@@ -203,17 +241,17 @@ double Interp::eval_expression(const std::string &t, size_t &pos)
 {
     pos++;
     double values[16];
-    std::string ops[16];
+    BinOp ops[16];
     int depth = 0;
     values[0] = read_real_value(t, pos);
     for (;;) {
-        std::string op = read_operator(t, pos);
-        int prec = op == "]" ? 0 : precedence(op);
+        BinOp op = read_operator(t, pos);
+        int prec = precedence(op);
         while (depth > 0 && precedence(ops[depth - 1]) >= prec) {
             values[depth - 1] = eval_binary(values[depth - 1], ops[depth - 1], values[depth]);
             depth--;
         }
-        if (op == "]") {
+        if (op == OP_END) {
             pos++;
             return values[0];
         }

@@ -67,7 +67,7 @@ void Interp::fanuc_call(Block &b)
 {
     if (s_.settings.disable_fanuc_style_sub) throw InterpError("Unknown m code used: M98");
     if (!b.word('p')) throw InterpError("Found 'm98' code with no P-word");
-    std::string name = std::to_string((long)std::nearbyint(b.value('p')));
+    std::string name = std::to_string(clamp_int(b.value('p')));
     std::shared_ptr<SourceFile> file = calls_.back().file;
     size_t line = 0;
     bool found = false;
@@ -79,7 +79,7 @@ void Interp::fanuc_call(Block &b)
     }
     if (!found)
         throw InterpError("Unable to find O-word " + name + " for M98 call");
-    long count = b.word('l') ? (long)b.value('l') : 1;
+    long count = b.word('l') ? clamp_int(b.value('l')) : 1;
     if (count < 1) return;
     push_call(SubDef{file, line}, name, {}, true);
     calls_.back().fanuc_count = count;

@@ -1,6 +1,7 @@
 // interp.cc: interpreter life cycle: init, open, line loop, error capture, close and exit.
 #include <cmath>
-#include <fstream>
+#include <algorithm>
+#include <cstdio>
 
 #include "inifile.hh"
 #include "interp.hh"
@@ -62,7 +63,7 @@ void Interp::init()
     s_.current_pocket = c.get_external_tool_slot();
     s_.selected_pocket = c.get_external_selected_tool_slot();
     c.use_length_units(s_.units);
-    int index = (int)s_.params[5220];
+    int index = clamp_int(s_.params[5220]);
     if (index < 1 || index > 9) index = 1;
     s_.origin_index = index;
     s_.params[5220] = index;
@@ -85,12 +86,32 @@ void Interp::init()
 // Load a file into memory (nullptr when unreadable).
 std::shared_ptr<SourceFile> Interp::load_file(const std::string &path)
 {
-    std::ifstream in(path);
+    FILE *in = fopen(path.c_str(), "rb");
     if (!in) return nullptr;
+    std::string text;
+    char buf[1 << 16];
+    size_t n;
+    while ((n = fread(buf, 1, sizeof buf, in)) > 0) text.append(buf, n);
+    fclose(in);
+    return make_source(path, text);
+}
+
+// Split program text into a SourceFile.
+std::shared_ptr<SourceFile> Interp::make_source(const std::string &path, const std::string &text)
+{
     auto f = std::make_shared<SourceFile>();
     f->path = path;
-    std::string line;
-    while (std::getline(in, line)) f->lines.push_back(rstrip(line));
+    f->lines.reserve((size_t)std::count(text.begin(), text.end(), '\n') + 1);
+    size_t start = 0;
+    while (start < text.size()) {
+        size_t nl = text.find('\n', start);
+        if (nl == std::string::npos) nl = text.size();
+        size_t end = nl;
+        while (end > start && (text[end - 1] == ' ' || text[end - 1] == '\t' || text[end - 1] == '\r'))
+            end--;
+        f->lines.emplace_back(text, start, end - start);
+        start = nl + 1;
+    }
     for (const std::string &l : f->lines) {
         if (l.find_first_not_of(" \t") == std::string::npos) continue;
         f->percent = is_percent(l);
@@ -104,6 +125,19 @@ void Interp::open(const std::string &path)
 {
     auto f = load_file(path);
     if (!f) throw InterpError("Unable to open file <" + path + ">");
+    open_source(f);
+}
+
+// Open program text held in memory (fuzzing, previews).
+void Interp::open_text(const std::string &name, const std::string &text)
+{
+    open_source(make_source(name, text));
+}
+
+// Make f the main program.
+void Interp::open_source(const std::shared_ptr<SourceFile> &f)
+{
+    const std::string &path = f->path;
     calls_.resize(1);
     calls_[0] = CallFrame();
     calls_[0].file = f;

@@ -11,12 +11,14 @@
 
 #include "block.hh"
 #include "canon.hh"
+#include "interp_base.hh"
 #include "interp_hooks.hh"
 #include "interp_state.hh"
 
-// Result of executing one line.
-enum InterpStatus { INTERP_OK = 0, INTERP_EXIT = 1, INTERP_EXECUTE_FINISH = 2,
-                    INTERP_ENDFILE = 3, INTERP_ERROR = 4 };
+// Binary operators of expressions (OP_END = closing bracket).
+enum BinOp { OP_END, OP_POW, OP_MUL, OP_DIV, OP_MOD, OP_ADD, OP_SUB, OP_EQ, OP_NE, OP_GT, OP_GE,
+             OP_LT, OP_LE, OP_AND, OP_OR, OP_XOR };
+
 
 // A source file held in memory, one string per line.
 struct SourceFile {
@@ -59,43 +61,47 @@ struct SubDef {
 };
 
 // The interpreter.
-class Interp : public ProfileSource {
+class Interp : public InterpBase, public ProfileSource {
 public:
     explicit Interp(Canon &out);
     ~Interp() override;
 
     // read [RS274NGC] and friends from an INI file; false if unloadable
-    bool load_ini(const std::string &path);
+    bool load_ini(const std::string &path) override;
     // set the .var file path
-    void set_var_file(const std::string &path) { var_file_ = path; }
+    void set_var_file(const std::string &path) override { var_file_ = path; }
+    // tool table (index 0 = spindle)
+    void set_tools(const std::vector<CanonTool> &tools) override { s_.tools = tools; }
     // state access (tool table loading, tests)
     InterpState &state() { return s_; }
     // initialise: canon init calls, parameter file; throws InterpError
-    void init();
+    void init() override;
     // open a program file (emits ON_RESET); throws InterpError
-    void open(const std::string &path);
+    void open(const std::string &path) override;
+    // open program text held in memory under a name
+    void open_text(const std::string &name, const std::string &text);
     // read and execute the next line of the open file
-    InterpStatus execute_next();
+    InterpStatus execute_next() override;
     // execute one MDI line
-    InterpStatus execute_line(const std::string &text);
+    InterpStatus execute_line(const std::string &text) override;
     // close the file (ON_RESET unless lazy)
-    void close();
+    void close() override;
     // interpreter exit: save parameters, ON_RESET
-    void exit();
+    void exit() override;
     // text of the last error
-    const std::string &error_text() const { return error_; }
+    const std::string &error_text() const override { return error_; }
     // source line of the last error
-    const std::string &error_line() const { return error_line_; }
+    const std::string &error_line() const override { return error_line_; }
     // current line text (for canon markers)
-    const std::string &line_text() const { return s_.line_text; }
+    const std::string &line_text() const override { return s_.line_text; }
     // block delete switch (lines starting with '/' are skipped when on)
-    void set_block_delete(bool on) { block_delete_ = on; }
+    void set_block_delete(bool on) override { block_delete_ = on; }
     // true when the last error was the end of the file
-    bool at_end_of_file() const { return eof_error_; }
+    bool at_end_of_file() const override { return eof_error_; }
     // stop with an error after this many executed lines (-1 = unlimited; fuzzing)
     void set_line_budget(long lines) { line_budget_ = lines; }
     // mark the process as task (#<_task> = 1)
-    void set_task(bool t) { task_ = t; }
+    void set_task(bool t) override { task_ = t; }
     // ProfileSource: evaluated blocks of a subroutine
     std::vector<Block> sub_blocks(const std::string &name) override;
 
@@ -128,8 +134,8 @@ private:
     std::string read_name(const std::string &t, size_t &pos);
     double read_parameter(const std::string &t, size_t &pos);
     double read_unary(const std::string &t, size_t &pos);
-    double eval_binary(double a, const std::string &op, double b);
-    std::string read_operator(const std::string &t, size_t &pos);
+    double eval_binary(double a, BinOp op, double b);
+    BinOp read_operator(const std::string &t, size_t &pos);
 
     // control flow (oword.cc, fanuc.cc)
     InterpStatus execute_oword(Block &b);
@@ -150,6 +156,8 @@ private:
     bool peek_oword(const std::string &line, std::string &name, OKind &kind);
     bool find_sub(const std::string &name, SubDef &def);
     std::shared_ptr<SourceFile> load_file(const std::string &path);
+    std::shared_ptr<SourceFile> make_source(const std::string &path, const std::string &text);
+    void open_source(const std::shared_ptr<SourceFile> &f);
     void push_call(const SubDef &def, const std::string &name, const std::vector<double> &args,
                    bool fanuc);
     void pop_call();

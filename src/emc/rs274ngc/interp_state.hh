@@ -22,6 +22,15 @@ public:
     explicit InterpError(const std::string &msg) : std::runtime_error(msg) {}
 };
 
+// Round a user-supplied value to an int, clamped to +-1e9 (NaN -> 0), so casts never overflow.
+inline int clamp_int(double v)
+{
+    if (!(v == v)) return 0;
+    if (v > 1e9) return 1000000000;
+    if (v < -1e9) return -1000000000;
+    return (int)(v < 0 ? v - 0.5 : v + 0.5);
+}
+
 // Feed mode (group 5).
 enum FeedMode { FEED_UNITS_PER_MINUTE = 0, FEED_INVERSE_TIME = 1, FEED_UNITS_PER_REV = 2 };
 

@@ -11,7 +11,7 @@ void Interp::do_io(Block &b)
     if (m == 66) return do_wait_input(b);
     if (m >= 62 && m <= 65) {
         if (!b.word('p')) throw InterpError("No valid P word with M" + std::to_string(m));
-        int n = (int)std::nearbyint(b.value('p'));
+        int n = clamp_int(b.value('p'));
         if (m == 62) out().set_motion_output_bit(n);
         if (m == 63) out().clear_motion_output_bit(n);
         if (m == 64) out().set_aux_output_bit(n);
@@ -20,7 +20,7 @@ void Interp::do_io(Block &b)
     }
     if (!b.word('e')) throw InterpError("No valid E word with M" + std::to_string(m));
     if (!b.word('q')) throw InterpError("No valid Q word with M" + std::to_string(m));
-    int n = (int)std::nearbyint(b.value('e'));
+    int n = clamp_int(b.value('e'));
     if (m == 67)
         out().set_motion_output_value(n, b.value('q'));
     else
@@ -34,7 +34,7 @@ void Interp::do_wait_input(Block &b)
         throw InterpError("Invalid to select both a digital and an analog input with M66");
     if (!b.word('p') && !b.word('e'))
         throw InterpError("Must select either a digital or an analog input with M66");
-    int type = b.word('l') ? (int)b.value('l') : 0;
+    int type = b.word('l') ? clamp_int(b.value('l')) : 0;
     if (type < 0 || type > 4) throw InterpError("Unknown wait type for M66");
     double timeout = b.word('q') ? b.value('q') : 0.0;
     if (type != 0 && timeout == 0.0)
@@ -42,13 +42,13 @@ void Interp::do_wait_input(Block &b)
     if (b.word('e') && type != 0)
         throw InterpError("Analog input can only be used with immediate return (L0)");
     bool digital = b.word('p');
-    int index = (int)std::nearbyint(digital ? b.value('p') : b.value('e'));
+    int index = clamp_int(digital ? b.value('p') : b.value('e'));
     int ret = out().wait_input(index, digital ? 1 : 0, type, timeout);
     if (ret == -1) {
         s_.params[5399] = -1;
         return;
     }
-    s_.params[5399] = digital ? real_out_.get_external_digital_input(index, (int)s_.params[5399])
+    s_.params[5399] = digital ? real_out_.get_external_digital_input(index, clamp_int(s_.params[5399]))
                               : real_out_.get_external_analog_input(index, s_.params[5399]);
 }
 
@@ -57,7 +57,7 @@ void Interp::do_spindle(Block &b)
 {
     int m = b.m_modes[MG_SPINDLE];
     if (m == -1) return;
-    int sp = b.has_dollar ? (int)b.dollar : 0;
+    int sp = b.has_dollar ? clamp_int(b.dollar) : 0;
     if (sp < -1 || sp >= SPINDLE_COUNT) throw InterpError("Invalid spindle ($) number");
     int first = sp == -1 ? 0 : sp, last = sp == -1 ? SPINDLE_COUNT - 1 : sp;
     for (int s = first; s <= last; s++) {
@@ -70,7 +70,7 @@ void Interp::do_spindle(Block &b)
     }
     if (m == 19) {
         double angle = (b.word('r') ? b.value('r') : 0.0) + s_.settings.orient_offset;
-        int mode = b.word('p') ? (int)std::nearbyint(b.value('p')) : 0;
+        int mode = b.word('p') ? clamp_int(b.value('p')) : 0;
         if (mode < 0 || mode > 2) throw InterpError("M19 P must be 0, 1 or 2");
         if (b.word('r') || b.word('p')) out().orient_spindle(first, angle, mode);
         s_.spindle_dir[first] = CANON_STOPPED;

@@ -81,9 +81,9 @@ void Interp::do_comp(Block &b)
         double dia = b.word('d') ? b.value('d') : 0.0;
         if (dia < 0) g = g == 411 ? 421 : 411;
         radius = std::fabs(dia) / 2.0;
-        orient = b.word('l') ? (int)b.value('l') : 0;
+        orient = b.word('l') ? clamp_int(b.value('l')) : 0;
     } else {
-        int tool = b.word('d') ? (int)std::nearbyint(b.value('d')) : 0;
+        int tool = b.word('d') ? clamp_int(b.value('d')) : 0;
         int index = tool == 0 ? 0 : find_tool_index(tool);
         if (index < 0)
             throw InterpError("Requested tool " + std::to_string(tool) +
@@ -117,7 +117,7 @@ void Interp::do_tool_length(Block &b)
     };
     auto tool_index = [&]() {
         if (!b.word('h')) return 0;
-        int h = (int)b.value('h');
+        int h = clamp_int(b.value('h'));
         int index = h == 0 ? 0 : find_tool_index(h);
         if (index < 0)
             throw InterpError("Requested tool " + std::to_string(h) + " not found in the tool table");

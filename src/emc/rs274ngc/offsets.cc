@@ -125,7 +125,7 @@ void Interp::g92_family(int code, const Block &b)
 // G10: dispatch on L.
 void Interp::g10(const Block &b)
 {
-    int l = b.word('l') ? (int)b.value('l') : -1;
+    int l = b.word('l') ? clamp_int(b.value('l')) : -1;
     if (l == 2 || l == 20) return g10_l2(b, l);
     if (l == 0 || l == 1 || l == 10 || l == 11) return g10_tool(b, l);
     throw InterpError("Line with G10 does not have L0, L1, L10, L11, L2, or L20");
@@ -136,7 +136,7 @@ void Interp::g10_l2(const Block &b, int l)
 {
     if (!b.word('p')) throw InterpError("P word missing with G10 L2");
     double pv = b.value('p');
-    int p = (int)std::nearbyint(pv);
+    int p = clamp_int(pv);
     if (std::fabs(pv - p) > 0.0001 || p < 0 || p > 9)
         throw InterpError("P value out of range (0-9) with G10 L2");
     if (s_.comp_side != CANON_SIDE_OFF)

@@ -273,7 +273,7 @@ void Interp::o_repeat(Block &b)
 {
     if (!b.o_has_expr) throw InterpError(flow_error("missing repeat count", b));
     CallFrame &f = calls_.back();
-    long n = (long)std::floor(b.o_value);
+    long n = (long)clamp_int(std::floor(b.o_value));
     if (n <= 0) {
         skip_to(b.o_name, {O_ENDREPEAT}, true);
         return;

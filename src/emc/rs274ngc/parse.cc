@@ -21,7 +21,7 @@ std::string normalize(const std::string &raw)
         if (c == ';') break;
         if (c == ' ' || c == '\t' || c == '\r' || c == '\n') continue;
         if (c != '(') {
-            t += (char)tolower((unsigned char)c);
+            t += (c >= 'A' && c <= 'Z') ? (char)(c + 32) : c;
             continue;
         }
         size_t j = i + 1;

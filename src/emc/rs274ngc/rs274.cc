@@ -2,7 +2,9 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <dlfcn.h>
 #include <getopt.h>
+#include <memory>
 #include <string>
 #include <unistd.h>
 
@@ -15,7 +17,7 @@ namespace {
 
 // Options of one run.
 struct Options {
-    std::string tool_file, var_file, ini_file, input, output;
+    std::string tool_file, var_file, ini_file, input, output, plugin;
     bool tool_given = false;
     int on_error = 2;
     bool block_delete = false, go = false, task = false, stack = false;
@@ -64,7 +66,7 @@ void parse_options(int argc, char **argv, Options &o, std::vector<CanonTool> &to
     while ((c = getopt(argc, argv, "p:t:v:n:bsgi:Tl:")) != -1) {
         std::string err;
         switch (c) {
-        case 'p': fprintf(stderr, "pluggable interpreters are not supported: %s\n", optarg); exit(1);
+        case 'p': o.plugin = optarg; break;
         case 't':
             o.tool_given = true;
             if (!load_tool_table(optarg, tools, err)) fprintf(stderr, "%s\n", err.c_str());
@@ -90,14 +92,14 @@ void parse_options(int argc, char **argv, Options &o, std::vector<CanonTool> &to
 }
 
 // report an interpreter error: text, then the source line
-void report(Interp &in)
+void report(InterpBase &in)
 {
     fflush(stdout);
     fprintf(stderr, "%s\n%s\n", in.error_text().c_str(), in.error_line().c_str());
 }
 
 // run the open program to its end; returns the exit status
-int run_file(Interp &in, const Options &o)
+int run_file(InterpBase &in, const Options &o)
 {
     for (;;) {
         InterpStatus st = in.execute_next();
@@ -109,7 +111,7 @@ int run_file(Interp &in, const Options &o)
 }
 
 // read MDI lines from stdin until EOF or "quit"
-int run_stdin(Interp &in, const Options &o)
+int run_stdin(InterpBase &in, const Options &o)
 {
     char line[1024];
     bool tty = isatty(0);
@@ -135,16 +137,39 @@ void menu()
     while (fgets(buf, sizeof buf, stdin) && atoi(buf) != 1) fprintf(stderr, "enter choice => ");
 }
 
-// initialise, run the file or stdin, close; returns the exit status
-int run(Interp &in, const Options &o, const std::vector<CanonTool> &tools)
+// the built-in interpreter, or the one a plugin's make_interp() creates (nullptr on failure)
+std::unique_ptr<InterpBase> make_interpreter(const std::string &plugin, Canon &canon)
 {
-    in.state().tools = tools;
+    if (plugin.empty()) return std::make_unique<Interp>(canon);
+    void *h = dlopen(plugin.c_str(), RTLD_NOW);
+    if (!h && plugin.find('/') == std::string::npos)
+        h = dlopen(("./" + plugin).c_str(), RTLD_NOW);
+    if (!h) {
+        std::string base = plugin.substr(plugin.rfind('/') + 1);
+        h = dlopen((tree_root() + "/lib/" + base).c_str(), RTLD_NOW);
+    }
+    if (!h) {
+        fprintf(stderr, "cannot load interpreter plugin %s: %s\n", plugin.c_str(), dlerror());
+        return nullptr;
+    }
+    auto make = reinterpret_cast<MakeInterpFn>(dlsym(h, "make_interp"));
+    if (!make) {
+        fprintf(stderr, "interpreter plugin %s has no make_interp()\n", plugin.c_str());
+        return nullptr;
+    }
+    return std::unique_ptr<InterpBase>(make(canon));
+}
+
+// initialise, run the file or stdin, close; returns the exit status
+int run(InterpBase &in, const Options &o, const std::vector<CanonTool> &tools)
+{
+    in.set_tools(tools);
     in.set_task(o.task);
     in.set_block_delete(o.block_delete);
     if (!o.var_file.empty()) in.set_var_file(o.var_file);
     try {
         in.init();
-    } catch (const InterpError &e) {
+    } catch (const std::exception &e) {
         fflush(stdout);
         fprintf(stderr, "%s\n", e.what());
         return 1;
@@ -156,7 +181,7 @@ int run(Interp &in, const Options &o, const std::vector<CanonTool> &tools)
     }
     try {
         in.open(o.input);
-    } catch (const InterpError &e) {
+    } catch (const std::exception &e) {
         fflush(stdout);
         fprintf(stderr, "%s\n\n", e.what());
         return 1;
@@ -193,7 +218,9 @@ int main(int argc, char **argv)
     }
     std::string empty;
     SaiCanon canon(out, &empty);
-    Interp in(canon);
+    std::unique_ptr<InterpBase> owned = make_interpreter(o.plugin, canon);
+    if (!owned) return 1;
+    InterpBase &in = *owned;
     if (!o.ini_file.empty()) {
         setenv("INI_FILE_NAME", o.ini_file.c_str(), 1);
         if (!in.load_ini(o.ini_file)) {

@@ -8,18 +8,20 @@
 // Append v formatted like printf("%.4f"); exact (fast path away from rounding ties).
 char *format_fixed4(char *buf, double v)
 {
+    if (!std::isfinite(v)) return buf + sprintf(buf, "%.4f", v);
     double a = std::fabs(v);
     if (a < 1e6) {
         double t = a * 10000.0;
-        double r = std::floor(t + 0.5);
-        double frac = t - std::floor(t);
+        unsigned long long whole = (unsigned long long)t;
+        double frac = t - (double)whole;
         if (std::fabs(frac - 0.5) > 1e-4) {
-            long long n = (long long)r;
+            unsigned long long n = whole + (frac > 0.5 ? 1 : 0);
+            unsigned ip = (unsigned)(n / 10000), fp = (unsigned)(n % 10000);
             char tmp[32];
             int len = 0;
-            for (int i = 0; i < 4; i++) { tmp[len++] = (char)('0' + n % 10); n /= 10; }
+            for (int i = 0; i < 4; i++) { tmp[len++] = (char)('0' + fp % 10); fp /= 10; }
             tmp[len++] = '.';
-            do { tmp[len++] = (char)('0' + n % 10); n /= 10; } while (n);
+            do { tmp[len++] = (char)('0' + ip % 10); ip /= 10; } while (ip);
             if (std::signbit(v)) *buf++ = '-';
             while (len) *buf++ = tmp[--len];
             *buf = 0;
@@ -32,9 +34,15 @@ char *format_fixed4(char *buf, double v)
 // Write one call line: counter, N marker, text.
 void SaiCanon::emit(const char *text)
 {
+    emit(text, strlen(text));
+}
+
+// Write one call line of known length.
+void SaiCanon::emit(const char *text, size_t len)
+{
     if (!out_) return;
     char head[64];
-    int n = snprintf(head, sizeof head, "%5ld ", ++counter_);
+    int n = counter_text(head, ++counter_);
     const std::string &l = *line_;
     size_t i = 0;
     while (i < l.size() && (l[i] == ' ' || l[i] == '\t' || l[i] == '/')) i++;
@@ -47,38 +55,73 @@ void SaiCanon::emit(const char *text)
         memcpy(head + n, "N..... ", 7);
         n += 7;
     }
+    if (n + len + 1 <= sizeof line_buf_) {
+        memcpy(line_buf_, head, n);
+        memcpy(line_buf_ + n, text, len);
+        line_buf_[n + len] = '\n';
+        fwrite(line_buf_, 1, n + len + 1, out_);
+        return;
+    }
     fwrite(head, 1, n, out_);
-    fputs(text, out_);
+    fwrite(text, 1, len, out_);
     fputc('\n', out_);
 }
 
-// printf-style emit.
+// "%5ld " of the call counter.
+int SaiCanon::counter_text(char *buf, long v)
+{
+    if (v < 0) return sprintf(buf, "%5ld ", v);
+    char digits[24];
+    int nd = 0;
+    do { digits[nd++] = (char)('0' + v % 10); v /= 10; } while (v);
+    int n = 0;
+    while (n < 5 - nd) buf[n++] = ' ';
+    while (nd) buf[n++] = digits[--nd];
+    buf[n++] = ' ';
+    return n;
+}
+
+// printf-style emit (any length).
 void SaiCanon::emitf(const char *fmt, ...)
 {
     if (!out_) return;
-    char buf[1024];
+    char buf[512];
     va_list ap;
     va_start(ap, fmt);
-    vsnprintf(buf, sizeof buf, fmt, ap);
+    int n = vsnprintf(buf, sizeof buf, fmt, ap);
     va_end(ap);
-    emit(buf);
+    if (n < (int)sizeof buf) {
+        emit(buf);
+        return;
+    }
+    std::string big((size_t)n + 1, '\0');
+    va_start(ap, fmt);
+    vsnprintf(&big[0], big.size(), fmt, ap);
+    va_end(ap);
+    emit(big.c_str());
 }
 
-// NAME(v1<sep>v2...) with count pose values.
-void SaiCanon::emit_pose(const char *name, int count, const CanonPose &p, const char *sep)
+// NAME(prefix v1<sep>v2...) with up to 9 values, each "%.4f".
+void SaiCanon::emit_values(const char *name, const double *v, int count, const char *sep)
 {
     if (!out_) return;
-    const double v[9] = {p.x, p.y, p.z, p.a, p.b, p.c, p.u, p.v, p.w};
-    char buf[512];
-    char *e = buf + strlen(strcpy(buf, name));
-    *e++ = '(';
-    for (int i = 0; i < count; i++) {
+    char text[64 + 9 * (FIXED4_MAX + 4)];
+    char *e = stpcpy(text, name);
+    for (int i = 0; i < count && i < 9; i++) {
         if (i) e = stpcpy(e, sep);
         e = format_fixed4(e, v[i]);
     }
     *e++ = ')';
     *e = 0;
-    emit(buf);
+    emit(text, (size_t)(e - text));
+}
+
+// NAME(x<sep>y...) with count pose values.
+void SaiCanon::emit_pose(const char *name, int count, const CanonPose &p, const char *sep)
+{
+    const double v[9] = {p.x, p.y, p.z, p.a, p.b, p.c, p.u, p.v, p.w};
+    std::string prefix = std::string(name) + "(";
+    emit_values(prefix.c_str(), v, count, sep);
 }
 
 // Remember the last commanded point (program coordinates).
@@ -86,17 +129,10 @@ void SaiCanon::track(const CanonPose &p) { pos_ = p; }
 
 void SaiCanon::set_g5x_offset(int origin, const CanonPose &p)
 {
-    char name[32];
+    char name[48];
     snprintf(name, sizeof name, "SET_G5X_OFFSET(%d, ", origin);
-    char buf[512];
     const double v[6] = {p.x, p.y, p.z, p.a, p.b, p.c};
-    char *e = stpcpy(buf, name);
-    for (int i = 0; i < 6; i++) {
-        if (i) e = stpcpy(e, ", ");
-        e = format_fixed4(e, v[i]);
-    }
-    strcpy(e, ")");
-    emit(buf);
+    emit_values(name, v, 6, ", ");
 }
 void SaiCanon::set_g92_offset(const CanonPose &p) { emit_pose("SET_G92_OFFSET", 6, p, ", "); }
 void SaiCanon::set_xy_rotation(double deg) { emitf("SET_XY_ROTATION(%.4f)", deg); }
@@ -119,12 +155,7 @@ void SaiCanon::set_feed_reference(CanonFeedReference r)
     emit(r == CANON_XYZ ? "SET_FEED_REFERENCE(CANON_XYZ)" : "SET_FEED_REFERENCE(CANON_WORKPIECE)");
 }
 void SaiCanon::set_feed_mode(int spindle, int mode) { emitf("SET_FEED_MODE(%d, %d)", spindle, mode); }
-void SaiCanon::set_feed_rate(double rate)
-{
-    char buf[64];
-    strcpy(format_fixed4(stpcpy(buf, "SET_FEED_RATE("), rate), ")");
-    emit(buf);
-}
+void SaiCanon::set_feed_rate(double rate) { emit_values("SET_FEED_RATE(", &rate, 1, ""); }
 void SaiCanon::set_motion_control_mode(CanonMotionMode m, double tol)
 {
     if (m == CANON_CONTINUOUS) emitf("SET_MOTION_CONTROL_MODE(CANON_CONTINUOUS, %f)", tol);
@@ -149,20 +180,24 @@ void SaiCanon::straight_feed(int, const CanonPose &p)
 void SaiCanon::arc_feed(int, double e1, double e2, double c1, double c2, int rot, double ae,
                         double a, double b, double c, double, double, double)
 {
-    if (out_) {
-        char buf[512];
-        char *e = stpcpy(buf, "ARC_FEED(");
-        const double v1[4] = {e1, e2, c1, c2};
-        for (double v : v1) e = stpcpy(format_fixed4(e, v), ", ");
-        e += sprintf(e, "%d, ", rot);
-        const double v2[4] = {ae, a, b, c};
-        for (int i = 0; i < 4; i++) {
-            if (i) e = stpcpy(e, ", ");
-            e = format_fixed4(e, v2[i]);
-        }
-        strcpy(e, ")");
-        emit(buf);
+    if (!out_) return;
+    char num[FIXED4_MAX];
+    std::string text = "ARC_FEED(";
+    const double v1[4] = {e1, e2, c1, c2};
+    for (double v : v1) {
+        format_fixed4(num, v);
+        text += num;
+        text += ", ";
     }
+    text += std::to_string(rot);
+    const double v2[4] = {ae, a, b, c};
+    for (double v : v2) {
+        format_fixed4(num, v);
+        text += ", ";
+        text += num;
+    }
+    text += ')';
+    emit(text.c_str());
 }
 void SaiCanon::turn_probe_on() { emit("TURN_PROBE_ON()"); }
 void SaiCanon::turn_probe_off() { emit("TURN_PROBE_OFF()"); }
@@ -184,12 +219,8 @@ void SaiCanon::straight_probe(int, const CanonPose &p, int)
 }
 void SaiCanon::rigid_tap(int, double x, double y, double z, double)
 {
-    char buf[128];
-    char *e = stpcpy(buf, "RIGID_TAP(");
-    e = stpcpy(format_fixed4(e, x), ", ");
-    e = stpcpy(format_fixed4(e, y), ", ");
-    strcpy(format_fixed4(e, z), ")");
-    emit(buf);
+    const double v[3] = {x, y, z};
+    emit_values("RIGID_TAP(", v, 3, ", ");
 }
 void SaiCanon::dwell(double s) { emitf("DWELL(%.4f)", s); }
 void SaiCanon::nurbs_g5_feed(int, const std::vector<CanonNurbsPoint> &pts, unsigned, CanonPlane)

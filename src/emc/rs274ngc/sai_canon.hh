@@ -110,8 +110,11 @@ public:
 
 private:
     void emit(const char *text);
+    void emit(const char *text, size_t len);
+    static int counter_text(char *buf, long v);
     void emitf(const char *fmt, ...) __attribute__((format(printf, 2, 3)));
     void emit_pose(const char *name, int count, const CanonPose &p, const char *sep);
+    void emit_values(const char *name, const double *v, int count, const char *sep);
     void track(const CanonPose &p);
 
     FILE *out_;
@@ -120,7 +123,11 @@ private:
     bool machine_mm_ = false;
     CanonUnits units_ = CANON_UNITS_MM;
     CanonPose pos_, probe_;
+    char line_buf_[1024];
 };
+
+// Room for any "%.4f" of a double (up to 309 integer digits, sign, point, 4 decimals).
+constexpr int FIXED4_MAX = 330;
 
 // Append v formatted like printf("%.4f") to buf; returns the new end.
 char *format_fixed4(char *buf, double v);

@@ -28,7 +28,7 @@ int Interp::find_tool_index(int toolno) const
 void Interp::do_select_tool(Block &b)
 {
     if (!b.word('t')) return;
-    int t = (int)b.value('t');
+    int t = clamp_int(b.value('t'));
     int index = t == 0 ? 0 : find_tool_index(t);
     if (index < 0)
         throw InterpError("Requested tool " + std::to_string(t) + " not found in the tool table");
@@ -47,7 +47,7 @@ bool Interp::do_tool_change(Block &b)
     if (m == 61) {
         if (!b.word('q') || b.value('q') < 0)
             throw InterpError("Need non-negative Q-word to specify tool number with M61");
-        int q = (int)std::nearbyint(b.value('q'));
+        int q = clamp_int(b.value('q'));
         int index = q == 0 ? 0 : find_tool_index(q);
         if (index < 0)
             throw InterpError("Requested tool " + std::to_string(q) + " not found in the tool table");
@@ -98,7 +98,7 @@ void Interp::g10_tool(const Block &b, int l)
     }
     if (s_.comp_side != CANON_SIDE_OFF)
         throw InterpError("Cannot change tool table with cutter radius compensation on");
-    int p = b.word('p') ? (int)std::nearbyint(b.value('p')) : 0;
+    int p = b.word('p') ? clamp_int(b.value('p')) : 0;
     int index = p > 0 ? find_tool_index(p) : -1;
     if (index < 0) throw InterpError("P value out of range with G10 L" + std::to_string(l));
     bool any = b.word('r') || b.word('i') || b.word('j') || b.word('q');
@@ -117,7 +117,7 @@ void Interp::g10_tool(const Block &b, int l)
     if (b.word('r')) t.diameter = 2.0 * b.value('r') / k;
     if (b.word('i')) t.frontangle = b.value('i');
     if (b.word('j')) t.backangle = b.value('j');
-    if (b.word('q')) t.orientation = (int)b.value('q');
+    if (b.word('q')) t.orientation = clamp_int(b.value('q'));
     s_.tools[index] = t;
     out().set_tool_table_entry(index, t);
     if (index == s_.current_pocket && !s_.settings.random_toolchanger) {

@@ -33,12 +33,12 @@ void Interp::read_var_file()
         char *vend;
         double v = strtod(end, &vend);
         if (vend == end) continue;
+        if (n < 1 || n >= PARAM_COUNT) continue;
         if (n <= last) {
             fclose(f);
             throw InterpError("Parameter file out of order");
         }
         last = (int)n;
-        if (n < 1 || n >= PARAM_COUNT) continue;
         s_.params[n] = v;
         in_var_file_.insert((int)n);
     }

@@ -15,6 +15,7 @@ description """Load with cfg=n0,n1,... giving the size of each group (at most 8 
 static int cfg[DEB_MAX_GROUPS] = { [0 ... DEB_MAX_GROUPS - 1] = -1 };
 RTAPI_MP_ARRAY_INT(cfg, DEB_MAX_GROUPS, "group sizes");
 
+/* Debounce every input of this group. */
 FUNCTION(_)
 {
     int i, d = delay;

@@ -9,5 +9,8 @@ function update_feedback "Update fb-out";
 license "GPL";
 author "OpenEMC";
 ;;
+/* out = in + offset. */
 FUNCTION(update_output) { out = in + offset; }
+
+/* fb-out = fb-in - offset. */
 FUNCTION(update_feedback) { fb_out = fb_in - offset; }

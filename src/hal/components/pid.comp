@@ -179,6 +179,7 @@ static void pid_debug_out(struct __comp_state *__comp_inst)
     ultimate_period = tu;
 }
 
+/* One controller step: error, derivatives, then PID output or autotuning. */
 FUNCTION(do_pid_calcs)
 {
     double dt = fperiod, cmd = command, fb = feedback, e;

@@ -23,6 +23,7 @@ RTAPI_MP_INT(num_chan, "number of channels");
 static char *names[SIGGEN_MAX_CHAN];
 RTAPI_MP_ARRAY_STRING(names, SIGGEN_MAX_CHAN, "names of channels");
 
+/* Advance the phase and compute every waveform. */
 FUNCTION(update) {
     double p = phase, ps = fperiod, sq, saw, tri, amp = amplitude, off = offset;
     if (reset) {

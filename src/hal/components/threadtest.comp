@@ -5,5 +5,8 @@ function reset "Set count to zero";
 license "GPL";
 author "OpenEMC";
 ;;
+/* Add one to count. */
 FUNCTION(increment) { count = count + 1; }
+
+/* Set count to zero. */
 FUNCTION(reset) { count = 0; }

@@ -3,7 +3,6 @@
 import os
 import shutil
 import subprocess
-import sys
 import tempfile
 
 WARN = ['-Wall', '-Wextra']
@@ -110,6 +109,6 @@ def install_python(src, dest_dir):
     dest = os.path.join(dest_dir, name)
     tmp = dest + '.tmp%d' % os.getpid()
     with open(tmp, 'w') as f:
-        f.write('#!%s\n' % sys.executable + '\n'.join(lines))
+        f.write('#!/usr/bin/env python3\n' + '\n'.join(lines))
     os.chmod(tmp, 0o555)
     os.replace(tmp, dest)

@@ -23,10 +23,13 @@ Options:
     -i, --install        build and install
     -d, --document       write the man page NAME.9 (NAME.1 for userspace)
     -a, --adoc           same as --document
+    -k, --keep-adoc=FILE also write the page text to FILE
+    -j, --install-doc    install the man page into share/man of the tree
+    -J, --view-doc       show the man page
     -o, --outfile=FILE   output file (preprocess/document, one input)
     -u, --userspace      treat .c inputs as user programs
     -P, --personalities=N  maximum number of personalities (default 64)
-    -U, --unix           reject CR line endings
+    -U, --unix           accepted; CR line endings are always converted
     -h, --help           this text
 """
 
@@ -40,6 +43,7 @@ class Opts:
     """Settings collected from the command line."""
     mode = 'preprocess'
     outfile = None
+    keep = None
     userspace = False
     unix = False
     cflags = ()
@@ -58,17 +62,22 @@ def parse_args(argv):
              '--compile': 'compile', '-p': 'preprocess', '--preprocess': 'preprocess',
              '-d': 'document', '--document': 'document', '-a': 'document',
              '--adoc': 'document', '-j': 'install-doc', '--install-doc': 'install-doc',
-             '-J': 'document', '--view-doc': 'document'}
+             '-J': 'view-doc', '--view-doc': 'view-doc'}
     for k, v in pairs:
         if k in modes:
             o.mode = modes[k]
         elif k in ('-o', '--outfile'):
             o.outfile = v
+        elif k in ('-k', '--keep-adoc'):
+            o.keep = v
         elif k in ('-u', '--userspace'):
             o.userspace = True
         elif k in ('-U', '--unix'):
             o.unix = True
         elif k in ('-P', '--personalities'):
+            if not v.isdigit() or int(v) < 1:
+                sys.stderr.write("halcompile: invalid number of personalities '%s'\n" % v)
+                raise SystemExit(1)
             comp_gen_main.MAX_PERSONALITIES = int(v)
             print('MAX_PERSONALITIES=%d' % int(v))
         elif k == '--extra-compile-args':
@@ -79,7 +88,7 @@ def parse_args(argv):
             sys.stdout.write(USAGE)
             raise SystemExit(0)
         elif k == '--print-modinc':
-            print(os.path.join(comp_build.tree_top(), 'share', 'openemc', 'Makefile.modinc'))
+            print(os.path.join(comp_build.tree_top(), 'src', 'hal', 'halcompile', 'Makefile.modinc'))
             raise SystemExit(0)
     return o, args
 
@@ -88,10 +97,6 @@ def read_comp(path, o, base_name):
     """Read and parse a .comp file; print errors and exit 1 on failure."""
     with open(path, 'rb') as f:
         raw = f.read().decode('utf-8', 'replace')
-    if o.unix and '\r' in raw:
-        sys.stderr.write('%s:0: Error: File contains DOS-style or Mac-style line '
-                         'endings.\n' % path)
-        raise SystemExit(1)
     text = raw.replace('\r\n', '\n').replace('\r', '\n')
     try:
         comp = parse_comp(path, text, base_name)
@@ -148,22 +153,38 @@ def do_comp(path, o):
         out = o.outfile or os.path.splitext(path)[0] + '.c'
         write_c(read_comp(path, o, base_of(out)), out)
         return
-    if o.mode in ('document', 'install-doc'):
-        comp = read_comp(path, o, base_of(o.outfile or path))
-        sect = '1' if comp.userspace else '9'
-        out = o.outfile or os.path.splitext(path)[0] + '.' + sect
-        if o.mode == 'install-doc':
-            out = os.path.join(comp_build.tree_top(), 'share', 'man', 'man' + sect,
-                               comp.name + '.' + sect)
-            os.makedirs(os.path.dirname(out), exist_ok=True)
-        with open(out, 'w') as f:
-            f.write(document(comp))
+    if o.mode in ('document', 'install-doc', 'view-doc'):
+        write_doc(path, o)
         return
     comp = read_comp(path, o, base_of(path))
     with tempfile.TemporaryDirectory(prefix='halcompile.') as tmp:
         csrc = os.path.join(tmp, comp.name + '.c')
         write_c(comp, csrc)
         build(comp.name, csrc, path, o, comp.userspace, comp)
+
+
+def write_doc(path, o):
+    """--document, --install-doc and --view-doc of one .comp file."""
+    comp = read_comp(path, o, base_of(o.outfile or path))
+    sect = '1' if comp.userspace else '9'
+    text = document(comp)
+    if o.keep:
+        with open(o.keep, 'w') as f:
+            f.write(text)
+    if o.mode == 'view-doc':
+        with tempfile.TemporaryDirectory(prefix='halcompile.') as tmp:
+            page = os.path.join(tmp, comp.name + '.' + sect)
+            with open(page, 'w') as f:
+                f.write(text)
+            comp_build.run(['man', '-l', page])
+        return
+    out = o.outfile or os.path.splitext(path)[0] + '.' + sect
+    if o.mode == 'install-doc':
+        out = os.path.join(comp_build.tree_top(), 'share', 'man', 'man' + sect,
+                           comp.name + '.' + sect)
+        os.makedirs(os.path.dirname(out), exist_ok=True)
+    with open(out, 'w') as f:
+        f.write(text)
 
 
 def build(name, csrc, orig, o, userspace, comp=None):

@@ -105,12 +105,23 @@ class Parser:
             raise self.error('Unknown type %r' % t.text, t)
         return TYPE_MAP[t.text]
 
+    def int_token(self, what):
+        """Consume an integer literal (decimal, 0x, 0o, 0b) and return its value."""
+        t = self.expect('number', what=what)
+        try:
+            value = int(t.text, 0)
+        except ValueError:
+            raise self.error('Invalid %s %r' % (what, t.text), t)
+        if value < 1:
+            raise self.error('Invalid %s %r' % (what, t.text), t)
+        return value
+
     def parse_array(self):
         """Optional [N] or [MAX : EXPR]; returns (size or None, expr or None)."""
         if not self.peek_is('['):
             return None, None
         self.advance()
-        size = self.expect('number', what='array size')
+        size = self.int_token('array size')
         expr = None
         if self.peek_is(':'):
             self.advance()
@@ -120,7 +131,7 @@ class Parser:
             expr = self.lex.raw_until(']')
             self.tok = self.lex.next()
         self.expect('punct', ']', "']'")
-        return int(size.text, 0), expr
+        return size, expr
 
     def parse_default(self):
         """Optional '= VALUE' (number or identifier token)."""
@@ -215,7 +226,7 @@ class Parser:
                     None, line=t.pos)
         if self.peek_is('['):
             self.advance()
-            item.size = int(self.expect('number', what='array size').text, 0)
+            item.size = self.int_token('array size')
             self.expect('punct', ']', "']'")
         item.default = self.parse_default()
         item.doc = self.opt_string()

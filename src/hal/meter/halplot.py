@@ -4,7 +4,8 @@ import os
 import subprocess
 import sys
 
-import halplot_png
+sys.path.insert(1, os.path.join(os.path.dirname(os.path.realpath(__file__)), "..", "lib", "python"))
+import halplot_png  # noqa: E402
 
 USAGE = """Usage: halplot -t THREAD [-n COUNT] [-o BASE] NAME...
        halplot -c CHAN [-n COUNT] [-o BASE] [LABEL...]

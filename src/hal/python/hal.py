@@ -1,6 +1,7 @@
 """hal.py: the Python `hal` module: userspace components over the _hal extension."""
 import enum
 import signal
+import sys
 import warnings
 
 from _hal import *  # noqa: F401,F403
@@ -129,7 +130,31 @@ class _Item:
 
 
 class Pin(_Item):
-    """A pin of a Python component."""
+    """A pin of a Python component; PORT pins also move bytes."""
+
+    def write(self, data):
+        """PORT OUT: write bytes or str; True when all of it fit."""
+        return self._raw().write(data)
+
+    def read(self, count):
+        """PORT IN: read count bytes (bytes), or False when fewer are available."""
+        return self._raw().read(count)
+
+    def peek(self, count):
+        """PORT IN: look at count bytes without consuming them, or False."""
+        return self._raw().peek(count)
+
+    def peek_commit(self, count):
+        """PORT IN: consume count bytes looked at with peek."""
+        return self._raw().peek_commit(count)
+
+    def clear(self):
+        """PORT: drop every byte in the buffer."""
+        return self._raw().clear()
+
+    def size(self):
+        """PORT: buffer size in bytes."""
+        return self._raw().size()
 
 
 class Param(_Item):
@@ -273,6 +298,12 @@ class component:
                 _hal.exit_component(self.__dict__["_id"])
             except Exception:  # interpreter shutdown or HAL already gone
                 pass
+
+
+# `hal.query` and `import hal.query`
+import hal_query as query  # noqa: E402
+__path__ = []
+sys.modules[__name__ + ".query"] = query
 
 
 def _on_sigterm(signum, frame):

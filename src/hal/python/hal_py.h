@@ -34,6 +34,9 @@ extern PyMethodDef hal_py_query_methods[];
 /* Module functions that read signal internals (hal_py_signals.c). */
 extern PyMethodDef hal_py_signal_methods[];
 
+/* _hal._query (hal_py_introspect.c). */
+extern PyMethodDef hal_py_introspect_methods[];
+
 /* The `hal.stream` type (hal_py_stream.c). */
 extern PyTypeObject hal_py_stream_type;
 

@@ -90,6 +90,119 @@ static PyObject *item_set(PyObject *obj, PyObject *value)
     Py_RETURN_NONE;
 }
 
+/* Port handle of a port pin with the given direction; 0 (exception set) otherwise. */
+static int item_port(hal_py_item_t *self, const char *op, int dir)
+{
+    if (!self->is_pin || self->type != HAL_PORT) {
+        PyErr_Format(PyExc_RuntimeError, "%s: %s: Pin not a port", op, self->name);
+        return 0;
+    }
+    if (dir != 0 && self->dir != dir) {
+        PyErr_Format(PyExc_RuntimeError, "%s: %s: Pin not %s", op, self->name,
+                     dir == HAL_OUT ? "output" : "input");
+        return 0;
+    }
+    if (item_cell(self)->p == 0) {
+        PyErr_Format(PyExc_RuntimeError, "%s: %s: port has no buffer", op, self->name);
+    }
+    return item_cell(self)->p;
+}
+
+/* item.write(bytes|str) -> True when all bytes fit (OUT ports). */
+static PyObject *item_port_write(PyObject *obj, PyObject *data)
+{
+    int port = item_port((hal_py_item_t *)obj, "write", HAL_OUT);
+    const char *bytes;
+    Py_ssize_t len;
+
+    if (port == 0) return NULL;
+    if (PyUnicode_Check(data)) {
+        bytes = PyUnicode_AsUTF8AndSize(data, &len);
+    } else if (PyBytes_AsStringAndSize(data, (char **)&bytes, &len) < 0) {
+        bytes = NULL;
+    }
+    if (bytes == NULL) return NULL;
+    return PyBool_FromLong(hal_port_write(port, bytes, (unsigned)len));
+}
+
+/* Shared body of read/peek: count bytes as bytes, or False when not available. */
+static PyObject *port_take(PyObject *obj, PyObject *args, const char *op, int consume)
+{
+    int port = item_port((hal_py_item_t *)obj, op, HAL_IN);
+    unsigned count;
+    PyObject *out;
+    bool ok;
+
+    if (port == 0 || !PyArg_ParseTuple(args, "I", &count)) return NULL;
+    out = PyBytes_FromStringAndSize(NULL, count);
+    if (out == NULL) return NULL;
+    ok = consume ? hal_port_read(port, PyBytes_AS_STRING(out), count)
+                 : hal_port_peek(port, PyBytes_AS_STRING(out), count);
+    if (!ok) {
+        Py_DECREF(out);
+        Py_RETURN_FALSE;
+    }
+    return out;
+}
+
+/* item.read(n) */
+static PyObject *item_port_read(PyObject *obj, PyObject *args)
+{
+    return port_take(obj, args, "read", 1);
+}
+
+/* item.peek(n) */
+static PyObject *item_port_peek(PyObject *obj, PyObject *args)
+{
+    return port_take(obj, args, "peek", 0);
+}
+
+/* item.peek_commit(n) -> bool: drops n peeked bytes. */
+static PyObject *item_port_peek_commit(PyObject *obj, PyObject *args)
+{
+    int port = item_port((hal_py_item_t *)obj, "peek_commit", HAL_IN);
+    unsigned count;
+
+    if (port == 0 || !PyArg_ParseTuple(args, "I", &count)) return NULL;
+    return PyBool_FromLong(hal_port_peek_commit(port, count));
+}
+
+/* item.clear(): empties the port. */
+static PyObject *item_port_clear(PyObject *obj, PyObject *unused)
+{
+    int port = item_port((hal_py_item_t *)obj, "clear", 0);
+
+    (void)unused;
+    if (port == 0) return NULL;
+    hal_port_clear(port);
+    Py_RETURN_NONE;
+}
+
+/* Shared body of size/readable/writable: an unsigned port figure. */
+static PyObject *port_figure(PyObject *obj, const char *op, unsigned (*fn)(hal_port_t))
+{
+    int port = item_port((hal_py_item_t *)obj, op, 0);
+    if (port == 0) return NULL;
+    return PyLong_FromUnsignedLong(fn(port));
+}
+
+/* item.size(), item.readable(), item.writable() */
+static PyObject *item_port_size(PyObject *obj, PyObject *unused)
+{
+    (void)unused;
+    return port_figure(obj, "size", hal_port_buffer_size);
+}
+static PyObject *item_port_readable(PyObject *obj, PyObject *unused)
+{
+    (void)unused;
+    return port_figure(obj, "readable", hal_port_readable);
+}
+static PyObject *item_port_writable(PyObject *obj, PyObject *unused)
+{
+    (void)unused;
+    return port_figure(obj, "writable", hal_port_writable);
+}
+
 /* item.get_type() */
 static PyObject *item_get_type(PyObject *obj, PyObject *unused)
 {
@@ -153,6 +266,14 @@ static PyMethodDef item_methods[] = {
     { "get_dir", item_get_dir, METH_NOARGS, "HAL direction (int)" },
     { "get_name", item_get_name, METH_NOARGS, "Short name" },
     { "is_pin", item_is_pin, METH_NOARGS, "True for pins" },
+    { "write", item_port_write, METH_O, "Port: write bytes; True when they fit" },
+    { "read", item_port_read, METH_VARARGS, "Port: read n bytes, or False" },
+    { "peek", item_port_peek, METH_VARARGS, "Port: look at n bytes, or False" },
+    { "peek_commit", item_port_peek_commit, METH_VARARGS, "Port: drop n peeked bytes" },
+    { "clear", item_port_clear, METH_NOARGS, "Port: drop all bytes" },
+    { "size", item_port_size, METH_NOARGS, "Port: buffer size" },
+    { "readable", item_port_readable, METH_NOARGS, "Port: bytes readable" },
+    { "writable", item_port_writable, METH_NOARGS, "Port: bytes writable" },
     { NULL, NULL, 0, NULL },
 };
 

@@ -69,7 +69,8 @@ PyMODINIT_FUNC PyInit__hal(void)
         || PyModule_AddObjectRef(m, "stream", (PyObject *)&hal_py_stream_type) < 0
         || add_constants(m) < 0 || add_methods(m, hal_py_comp_methods) < 0
         || add_methods(m, hal_py_query_methods) < 0
-        || add_methods(m, hal_py_signal_methods) < 0) {
+        || add_methods(m, hal_py_signal_methods) < 0
+        || add_methods(m, hal_py_introspect_methods) < 0) {
         Py_DECREF(m);
         return NULL;
     }

@@ -60,7 +60,7 @@ static void sample_loop(FILE *out, hal_stream_t *stream, long count, int tag)
     }
 }
 
-/* Entry point: parse options, attach, print records, clean up. */
+/* Entry point: parse options, attach, open the output, print records, clean up. */
 int main(int argc, char **argv)
 {
     sampling_opts_t opts;
@@ -71,18 +71,19 @@ int main(int argc, char **argv)
     if (sampling_parse_args(argc, argv, "cntN", &opts) < 0) {
         return 1;
     }
+    sampling_install_signals();
+    comp_id = sampling_attach(&opts, "halsampler", SAMPLER_KEY_BASE, &stream);
+    if (comp_id < 0) {
+        return 1;
+    }
     if (opts.filename != NULL) {
         out = fopen(opts.filename, "w");
         if (out == NULL) {
             fprintf(stderr, "ERROR: could not open '%s': %s\n", opts.filename, strerror(errno));
+            hal_stream_detach(&stream);
+            hal_exit(comp_id);
             return 1;
         }
-    }
-    sampling_install_signals();
-    comp_id = sampling_attach(&opts, "halsampler", SAMPLER_KEY_BASE, &stream);
-    if (comp_id < 0) {
-        if (out != stdout) fclose(out);
-        return 1;
     }
     sample_loop(out, &stream, opts.count, opts.tag);
     fflush(out);

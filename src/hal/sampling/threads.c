@@ -29,7 +29,6 @@ RTAPI_MP_INT(fp3, "thread 3 uses floating point (ignored)");
 #define NUM_THREADS 3
 
 static int comp_id;
-static const char *created[NUM_THREADS];
 
 /* Returns non-zero when a thread slot has a usable name and period. */
 static int thread_wanted(const char *name, long period_ns)
@@ -66,7 +65,6 @@ int rtapi_app_main(void)
             continue;
         }
         retval = hal_create_thread(names[n], periods[n], fps[n]);
-        created[n] = retval < 0 ? NULL : names[n];
         if (retval < 0) {
             rtapi_print_msg(RTAPI_MSG_ERR,
                 "THREADS: ERROR: could not create thread '%s'\n", names[n]);
@@ -79,28 +77,9 @@ int rtapi_app_main(void)
     return 0;
 }
 
-/* Removes the pseudo component `__<name>` of a thread, if it still exists. */
-static void remove_pseudo_comp(const char *name)
-{
-    char pseudo[HAL_NAME_LEN + 1];
-    hal_comp_info_t info;
-
-    rtapi_snprintf(pseudo, sizeof(pseudo), "__%s", name);
-    if (hal_comp_by_name(pseudo, &info) == 0) {
-        hal_exit(info.comp_id);
-    }
-}
-
-/* Module exit: removes the component and the threads' pseudo components
- * (`<thread>.time/.tmax/.threadbeat`); the threads live until HAL shuts down. */
+/* Module exit: removes the component; the HAL library then drops the threads'
+ * pseudo components (`<thread>.time/.tmax/.threadbeat`), the threads keep running. */
 void rtapi_app_exit(void)
 {
-    int n;
-    for (n = 0; n < NUM_THREADS; n++) {
-        if (created[n] != NULL) {
-            remove_pseudo_comp(created[n]);
-            created[n] = NULL;
-        }
-    }
     hal_exit(comp_id);
 }

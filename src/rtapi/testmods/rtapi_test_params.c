@@ -1,4 +1,5 @@
 /* rtapi_test_params.c: test module declaring every parameter type; prints what it got. */
+#include <stdio.h>
 #include "rtapi.h"
 #include "rtapi_app.h"
 
@@ -38,6 +39,7 @@ int rtapi_app_main(void)
     rtapi_print("params: ints=%d,%d,%d,%d longs=%ld,%ld,%ld names=%s,%s,%s\n",
                 ints[0], ints[1], ints[2], ints[3], longs[0], longs[1], longs[2],
                 show(names[0]), show(names[1]), show(names[2]));
+    printf("params: plain printf from the module\n");
     return 0;
 }
 

@@ -1,5 +1,6 @@
 #!/bin/bash
 # HAL benchmark: ns per call of 1,000 trivial functs in one thread (timing on), 10,000 functs in memory, bytes per pin/signal.
+[ -n "${BASH_VERSION:-}" ] || exec bash "$0" "$@"
 top=$(cd "$(dirname "$0")/../../.." && pwd)
 . "$top/scripts/rip-environment" >/dev/null 2>&1
 export OPENEMC_INSTANCE=${OPENEMC_INSTANCE:-201}

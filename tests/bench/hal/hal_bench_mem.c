@@ -30,6 +30,7 @@ static long used(void)
     return st.mem_used;
 }
 
+/* Print the memory and timing figures. */
 int main(void)
 {
     hal_float_t **cells;

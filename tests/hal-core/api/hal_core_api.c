@@ -71,6 +71,13 @@ static void list_comps(void)
     halpr_mutex_give();
 }
 
+/* A function that user comps may not export. */
+static void nop_funct(void *arg, long period)
+{
+    (void)arg;
+    (void)period;
+}
+
 struct pins {
     hal_bit_t *bin, *bout, *bio, *bin2;
     hal_float_t *fin, *fout;
@@ -82,6 +89,9 @@ struct pins {
     hal_float_t gain;
     hal_s32_t count;
     hal_bit_t flag;
+    hal_float_t **real_ref;
+    hal_bit_t **bool_ref;
+    hal_s32_t *si32_ref;
 };
 
 /* Components, ids, names, pins and params. */
@@ -127,12 +137,24 @@ static int test_comps(struct pins **pp)
     show("pin newf overflow", hal_pin_bit_newf(HAL_IN, &p->bin, id, "%s.too-long", longname));
     show("pin bad dir", hal_pin_bit_new("core.bad", (hal_pin_dir_t)HAL_RO, &p->bin, id));
     show("pin data not in shm", hal_pin_bit_new("core.bad", HAL_IN, (hal_bit_t **)&longname, id));
+    show("new-API pin real default 1.5", hal_pin_new_real(id, HAL_OUT, &p->real_ref, 1.5, "core.n-%s", "real"));
+    show("new-API param si32 default -7", hal_param_new_si32(id, HAL_RW, &p->si32_ref, -7, "core.n-si32"));
+    show("new-API pin bool default TRUE", hal_pin_new_bool(id, HAL_IN, &p->bool_ref, 1, "core.n-bool"));
+    value("core.n-real", 0);
+    value("core.n-si32", 0);
+    printf("accessors: %g %d\n", hal_get_real(p->real_ref), hal_get_bool(p->bool_ref));
+    hal_set_real(p->real_ref, 3.25);
+    value("core.n-real", 0);
     show("param float rw", hal_param_float_new("core.gain", HAL_RW, &p->gain, id));
     show("param s32 ro", hal_param_s32_new("core.count", HAL_RO, &p->count, id));
     show("param bit named like a pin", hal_param_bit_new("core.b-in", HAL_RW, &p->flag, id));
     show("param duplicate", hal_param_bit_new("core.gain", HAL_RW, &p->flag, id));
     show("param port type", hal_param_new("core.pp", HAL_PORT, HAL_RW, (void *)&p->flag, id));
-    show("export_funct from user comp", hal_export_funct("core.f", NULL, NULL, 0, 0, id));
+    show("export_funct without code", hal_export_funct("core.f", NULL, NULL, 0, 0, id));
+    show("export_funct from user comp", hal_export_funct("core.f", nop_funct, NULL, 0, 0, id));
+    show("create_thread from user process", hal_create_thread("t", 1000000, 1));
+    show("thread_delete from user process", hal_thread_delete("t"));
+    show("addf missing funct", hal_add_funct_to_thread("core.f", "t", -1));
     show("hal_ready", hal_ready(id));
     show("hal_ready again", hal_ready(id));
     show("pin after ready", hal_pin_bit_new("core.late", HAL_IN, &p->bin, id));
@@ -323,6 +345,7 @@ static void test_ids(int id)
     printf("mapped after last exit=%d\n", hal_is_init());
 }
 
+/* Run every section in order; output is compared with expected. */
 int main(void)
 {
     struct pins *p;

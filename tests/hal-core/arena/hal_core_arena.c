@@ -2,6 +2,7 @@
 #include "hal.h"
 #include <stdio.h>
 
+/* Report the arena size; unless 'total-only' is given, fill it with pins. */
 int main(int argc, char **argv)
 {
     hal_stats_t st;

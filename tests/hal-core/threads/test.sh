@@ -17,7 +17,13 @@ for p in init-calls init-saw mismatch period; do
 done
 [ "$(halcmd getp hal-core-rt.count)" -ge 20 ] && echo "count ok"
 [ "$(halcmd getp hal-core-rt.d-count)" -gt 0 ] && echo "parked thread mid still runs"
-halcmd show funct hal-core-rt.init | awk 'NR>2 && NF {print "init users", $5}'
+# the executed init list is freed by the thread once it finds the HAL mutex free
+for i in $(seq 1 500); do
+    users=$(halcmd show funct hal-core-rt.init | awk 'NR>2 && NF {print $5}')
+    [ "$users" = 0 ] && break
+    sleep 0.01
+done
+echo "init users $users"
 halcmd show thread | sed 's/( *[0-9]*, *[0-9]* )//'
 # unloading the creator removes the pseudo comps (and so the header lines); threads stay
 halcmd unloadrt hal_core_rt

@@ -152,3 +152,8 @@ echo "== help"
 halcompile --help | head -1; echo "exit ${PIPESTATUS[0]}"
 echo "== missing file"
 halcompile nosuch.comp 2>&1; echo "exit $?"
+echo "== bad personality count"
+halcompile -P x fpwarn.comp 2>&1; echo "exit $?"
+echo "== array size that is not an integer"
+printf 'component badsize;\npin out float out-#[2.5];\nfunction _;\nlicense "GPL";\n;;\n' > badsize.comp
+halcompile badsize.comp 2>&1; echo "exit $?"

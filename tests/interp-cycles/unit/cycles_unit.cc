@@ -65,6 +65,8 @@ static void run_line(InterpState &s, RecordCanon &canon, const std::string &text
     }
     for (int m : sl.m)
         apply_m(s, m);
+    if (sl.block.word('f'))
+        s.feed_rate = sl.block.value('f');
     bool axes = false;
     for (char c : {'x', 'y', 'z', 'u', 'v', 'w'})
         axes |= sl.block.word(c);
@@ -83,6 +85,7 @@ int main()
     InterpState s;
     s.peck_clearance_g73 = 0.05;
     s.peck_clearance_g83 = 0.1;
+    s.feed_rate = 10;
     RecordCanon canon;
     std::string line;
     while (std::getline(std::cin, line)) {

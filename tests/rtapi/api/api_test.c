@@ -151,6 +151,7 @@ static void check_helpers(void)
     printf(", irq -> %d, kernelspace %d\n", rtapi_irq_new(1, 1, NULL), rtapi_is_kernelspace());
 }
 
+/* Run every check group in order. */
 int main(void)
 {
     setvbuf(stdout, NULL, _IONBF, 0);

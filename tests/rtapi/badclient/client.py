@@ -3,6 +3,8 @@
 import os
 import socket
 import struct
+import sys
+import time
 
 
 def socket_name():
@@ -26,6 +28,19 @@ def request(*args):
     body = b"".join(struct.pack("<H", len(a)) + a.encode() for a in args)
     return struct.pack("<HH", 4 + len(body), len(args)) + body
 
+
+def hold(flag):
+    """Send half a request, tell the test through flag, then stay silent."""
+    s = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
+    s.connect(socket_name())
+    s.sendall(request("list")[:5])
+    open(flag, "w").close()
+    time.sleep(60)
+
+
+if len(sys.argv) == 3 and sys.argv[1] == "hold":
+    hold(sys.argv[2])
+    sys.exit(0)
 
 full = request("load", "rtapi_test_params", "count=9")
 send_and_close("nothing", b"")

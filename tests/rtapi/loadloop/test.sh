@@ -3,11 +3,7 @@
 # times: no leaked shared memory segments, file descriptors or memory.
 . ../lib.sh
 realtime start
-pid=
-for p in $(pgrep -x rtapi_app); do
-    grep -qx "OPENEMC_INSTANCE=$OPENEMC_INSTANCE" <(tr '\0' '\n' < /proc/$p/environ) && pid=$p
-done
-
+pid=$(rt_master_pid)
 # cycle N: load/unload the leak module N times, stopping at the first failure
 cycle() {
     local i

@@ -40,6 +40,7 @@ static void dump(void)
            show(names[0]), show(names[1]), show(names[2]));
 }
 
+/* Apply each argument in turn and show the resulting values. */
 int main(void)
 {
     static const char *const args[] = {

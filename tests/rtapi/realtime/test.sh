@@ -10,6 +10,8 @@ mkshm() {
 # has KEY: 1 when a segment with KEY exists, else 0
 has() { ipcs -m | grep -c "^$1 "; }
 realtime status; echo "status -> $?"
+RTLIB_DIR=$RTLIB_DIR/missing realtime start; echo "start without hal_lib -> $?"
+realtime status; echo "status -> $?"
 realtime start; echo "start -> $?"
 realtime start; echo "start again -> $?"
 realtime status; echo "status -> $?"
@@ -35,3 +37,20 @@ done
 OPENEMC_INSTANCE=$rt_other realtime stop; echo "other stop -> $?"
 echo "other left: $(has "$(rt_key 0x48414c32 $rt_other)")"
 realtime bogus; echo "bogus -> $?"
+# SIGTERM: the master unloads everything, releases its id and exits
+realtime start
+pid=$(rt_master_pid)
+kill -TERM "$pid"
+# alive PID: the process exists and is not a zombie
+alive() { grep -q '^[^Z]' <(sed -n 's/^State:\s*//p' "/proc/$1/status" 2>/dev/null); }
+for ((i = 0; i < 500; i++)); do alive "$pid" || break; sleep 0.02; done
+echo "after SIGTERM: process gone $(alive "$pid" && echo no || echo yes), counter $(has "$(rt_key 0x48484c34)")"
+realtime status; echo "status -> $?"
+# a stopped (unreachable) master: status says so, stop still ends it cleanly
+realtime start
+pid=$(rt_master_pid)
+kill -STOP "$pid"
+realtime status 2>/dev/null; echo "status -> $?"
+realtime stop 2>/dev/null; echo "stop -> $?"
+echo "stopped master gone: $(alive "$pid" && echo no || echo yes)"
+realtime status; echo "status -> $?"

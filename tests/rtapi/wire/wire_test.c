@@ -62,6 +62,7 @@ static void replies(void)
     printf("reply too short: %d\n", rtapi_wire_decode_reply(buf, 5, &result, text, sizeof text));
 }
 
+/* Run the request and reply checks. */
 int main(void)
 {
     requests();

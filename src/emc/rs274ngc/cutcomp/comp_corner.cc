@@ -5,8 +5,8 @@
 
 namespace cutcomp {
 
-// turns smaller than this (radians) are treated as tangent: no corner arc, no trimming
-static const double TANGENT_TOLERANCE = 1e-6;
+// turns smaller than this (radians) count as tangent: no corner arc, no trimming, as the reference
+static const double TANGENT_TOLERANCE = 0.05;
 // near reversals (radians from a half turn) are decided by the curvature of the two moves
 static const double REVERSAL_TOLERANCE = 0.05;
 

@@ -7,7 +7,6 @@
 
 namespace cutcomp {
 
-
 // nine-axis pose of a canon pose
 static Pose pose_of(const CanonPose &p)
 {
@@ -210,12 +209,13 @@ void CompEngine::arc_move(int line, const Pose &end, Vec2 center, int rotation)
     double r0 = distance(s2, center);
     if (k < 0 && r0 <= radius_)
         throw InterpError("Tool radius not less than arc radius with comp");
+    double r_end = distance(e2, center) + k * radius_;
     PathShape shape;
     shape.is_arc = true;
     shape.center = center;
-    shape.radius = r0 + k * radius_;
-    Vec2 start = center + shape.radius * polar(angle_of(s2 - center));
-    Vec2 e_off = center + (distance(e2, center) + k * radius_) * polar(angle_of(e2 - center));
+    shape.radius = k > 0 ? r_end : r0 + k * radius_;
+    Vec2 start = center + (r0 + k * radius_) * polar(angle_of(s2 - center));
+    Vec2 e_off = center + r_end * polar(angle_of(e2 - center));
     double kappa = (rotation > 0 ? 1.0 : -1.0) / r0;
     Joint j;
     j.dir = arc_tangent(center, s2, rotation);
@@ -234,7 +234,7 @@ void CompEngine::arc_move(int line, const Pose &end, Vec2 center, int rotation)
     m.start = corner(j);
     m.end = with_plane_point(ax_, end, e_off);
     PathShape end_shape = shape;
-    end_shape.radius = distance(e_off, center);
+    end_shape.radius = r_end;
     hold(m, arc_tangent(center, e2, rotation), kappa, end_shape);
 }
 

@@ -80,16 +80,16 @@ public:
     void lock_rotary(int l, int j) override { out_.lock_rotary(l, j); }
     void unlock_rotary(int l, int j) override { out_.unlock_rotary(l, j); }
 
-    // comments wait; messages and logs print at once; program stops flush first
+    // comments wait; messages, logs and program stops print at once; program end flushes
     void comment(const std::string &t) override { later([=](Canon &c) { c.comment(t); }); }
     void message(const std::string &t) override { out_.message(t); }
     void log(const std::string &t) override { out_.log(t); }
     void logopen(const std::string &n) override { out_.logopen(n); }
     void logappend(const std::string &n) override { out_.logappend(n); }
     void logclose() override { out_.logclose(); }
-    void program_stop() override { flush_all(); out_.program_stop(); }
-    void optional_program_stop() override { flush_all(); out_.optional_program_stop(); }
-    void pallet_shuttle() override { flush_all(); out_.pallet_shuttle(); }
+    void program_stop() override { out_.program_stop(); }
+    void optional_program_stop() override { out_.optional_program_stop(); }
+    void pallet_shuttle() override { out_.pallet_shuttle(); }
     void program_end() override { flush_all(); out_.program_end(); }
     void set_block_delete(bool b) override { out_.set_block_delete(b); }
     void set_optional_program_stop(bool b) override { out_.set_optional_program_stop(b); }

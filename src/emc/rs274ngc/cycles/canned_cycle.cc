@@ -127,6 +127,18 @@ static void levels(InterpState &s, const Block &b, const PlaneAxes &ax, bool sam
                           " plane");
 }
 
+// most pecks one G73/G83 hole may take; more means Q is far too small for the depth
+static const double MAX_PECKS = 100000;
+
+// refuse a peck count that would flood the motion queue
+static void check_pecks(int code, const Hole &h)
+{
+    if ((code == 730 || code == 830) && (h.r - h.bottom) / h.peck > MAX_PECKS)
+        throw InterpError("G" + std::to_string(code / 10) +
+                          ": Q is too small for the hole depth (more than " +
+                          std::to_string((long)MAX_PECKS) + " pecks)");
+}
+
 // where hole n (0-based) is: G90 at the words (or current point), G91 stepping by them
 static void hole_position(const InterpState &s, const Block &b, const PlaneAxes &ax, Hole &h)
 {
@@ -178,6 +190,8 @@ void execute(InterpState &s, const Block &b, Canon &canon)
     int code = s.motion_mode;
     if (!cycle_body(code))
         throw InterpError("Unknown canned cycle code G" + std::to_string(code / 10));
+    if (s.feed_rate <= 0)
+        throw InterpError("Cannot feed with zero feed rate");
     PlaneAxes ax = plane_axes(s.plane);
     check_rotary(b);
     repeats(b);
@@ -189,6 +203,7 @@ void execute(InterpState &s, const Block &b, Canon &canon)
     dwell_and_peck(s, b, code, same, h);
     back_bore_words(b, code, h);
     levels(s, b, ax, same, h);
+    check_pecks(code, h);
     CycleMoves mv(s, canon, ax, s.sequence_number);
     if (s.cycle_il < h.r) {
         mv.rapid_depth(h.r);

@@ -64,6 +64,16 @@ void CycleMoves::feed(double a, double b, double c)
     canon_.straight_feed(line_, to_canon(s_.current));
 }
 
+// arc feed in the cycle plane, the depth axis and the other axes unchanged
+void CycleMoves::arc(double a, double b, double ca, double cb, int rotation)
+{
+    s_.current[ax_.aa] = a;
+    s_.current[ax_.bb] = b;
+    const Pose &p = s_.current;
+    canon_.arc_feed(line_, a, b, ca, cb, rotation, p[ax_.cc], p[AX_A], p[AX_B], p[AX_C], p[AX_U],
+                    p[AX_V], p[AX_W]);
+}
+
 // feed whose printed coordinates use the XZ/YZ order of the other plane (reference G84/G74 behaviour)
 void CycleMoves::feed_swapped(double a, double b, double c)
 {

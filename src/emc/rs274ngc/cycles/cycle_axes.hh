@@ -35,6 +35,8 @@ public:
     void feed(double a, double b, double c);
     // feed to (a, b, c) printed with the axis order of the other side plane, as the reference does in G84/G74
     void feed_swapped(double a, double b, double c);
+    // arc in the cycle plane to (a, b) about (ca, cb); rotation > 0 counterclockwise
+    void arc(double a, double b, double ca, double cb, int rotation);
     // rapid along the depth axis only
     void rapid_depth(double c) { rapid(cur(ax_.aa), cur(ax_.bb), c); }
     // feed along the depth axis only

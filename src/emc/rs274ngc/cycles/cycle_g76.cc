@@ -7,6 +7,9 @@
 
 namespace cycles {
 
+// most degressive passes one G76 block may take before the spring passes
+static const int MAX_PASSES = 10000;
+
 // The thread geometry of one G76 block.
 struct Thread {
     double x0 = 0, z0 = 0;      // drive line start (current point)
@@ -56,8 +59,8 @@ static Thread read_thread(const InterpState &s, const Block &b)
     t.degression = b.word('r') ? std::max(b.value('r'), 1.0) : 1.0;
     t.tan_angle = b.word('q') ? std::tan(b.value('q') * M_PI / 180.0) : 0.0;
     t.spring_passes = b.word('h') ? (int)std::lround(b.value('h')) : 0;
-    if (t.spring_passes < 0)
-        throw InterpError("In G76, H must not be negative");
+    if (t.spring_passes < 0 || t.spring_passes > MAX_PASSES)
+        throw InterpError("In G76, H must be 0 to " + std::to_string(MAX_PASSES));
     t.taper_length = b.word('e') ? b.value('e') : 0.0;
     t.taper_ends = b.word('l') ? (int)std::lround(b.value('l')) : 0;
     if (t.taper_length < 0 || t.taper_ends < 0 || t.taper_ends > 3)
@@ -111,6 +114,9 @@ void execute_g76(InterpState &s, const Block &b, Canon &canon)
     if (s.plane != CANON_PLANE_XZ)
         throw InterpError("G76 is only allowed in the XZ plane (G18)");
     Thread t = read_thread(s, b);
+    if (std::pow(t.full_depth / t.first_depth, t.degression) > MAX_PASSES)
+        throw InterpError("In G76, J is too small for K with this R (more than " +
+                          std::to_string(MAX_PASSES) + " passes)");
     CycleMoves mv(s, canon, plane_axes(CANON_PLANE_XZ), s.sequence_number);
     for (int n = 1;; n++) {
         double depth = t.first_depth * std::pow((double)n, 1.0 / t.degression);

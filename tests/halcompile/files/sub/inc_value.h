@@ -1,0 +1,2 @@
+/* inc_value.h: constant used by the include test component. */
+#define INC_VALUE 40
