@@ -226,6 +226,10 @@ extern int hal_del_funct_from_thread(const char *funct_name, const char *thread_
 extern int hal_start_threads(void);
 extern int hal_stop_threads(void);
 extern int hal_set_constructor(int comp_id, hal_constructor_t make);
+/* rtapi_app's `newinst comp name [args]`: call comp's constructor with prefix `name`
+ * and the args joined by spaces (-ENOENT unknown comp, -ENOEXEC no constructor). */
+extern int hal_newinst(const char *comp_name, const char *inst_name, int argc,
+                       const char **argv);
 /* Use the next base period exactly as requested (setexact_for_test_suite_only);
  * silent; -EBUSY once a thread exists (caller prints the HAL_LIB texts). */
 extern int hal_set_exact_period(void);

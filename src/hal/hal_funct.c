@@ -27,23 +27,21 @@ static int hal_export_check(const char *name, int comp_id, hal_comp_t **out)
     return 0;
 }
 
-/* Create <name>.time, .tmax, .tmax-increased and cache their RT addresses. */
+/* Create <name>.time, .tmax, .tmax-increased with their cells in one timing block. */
 static int hal_funct_items(hal_funct_t *f, int comp_id)
 {
-    hal_s32_t **time_cell = hal_malloc(sizeof(void *));
-    hal_data_u *cells = hal_malloc(2 * sizeof(hal_data_u));
+    hal_funct_timing_t *tm = hal_malloc(sizeof *tm);
     int rc;
 
-    if (!time_cell || !cells)
+    if (!tm)
         return -ENOMEM;
-    rc = hal_pin_s32_newf(HAL_OUT, time_cell, comp_id, "%s.time", f->name);
+    rc = hal_pin_s32_newf(HAL_OUT, &tm->time, comp_id, "%s.time", f->name);
     if (rc == 0)
-        rc = hal_param_s32_newf(HAL_RW, &cells[0].s, comp_id, "%s.tmax", f->name);
+        rc = hal_param_s32_newf(HAL_RW, &tm->tmax, comp_id, "%s.tmax", f->name);
     if (rc == 0)
-        rc = hal_param_bit_newf(HAL_RO, &cells[1].b, comp_id, "%s.tmax-increased", f->name);
-    f->runtime = time_cell;
-    f->maxtime = &cells[0].s;
-    f->maxtime_increased = &cells[1].b;
+        rc = hal_param_bit_newf(HAL_RO, &tm->tmax_increased, comp_id, "%s.tmax-increased",
+                                f->name);
+    f->timing = tm;
     return rc;
 }
 

@@ -16,6 +16,8 @@ int hal_proc_comps;
 static int hal_shm_id = -1;
 
 /* Byte size of one object of each kind (index = HAL_KIND_*). */
+_Static_assert(sizeof(hal_funct_entry_t) == 32, "thread entries must fill half a cache line");
+
 static const int hal_kind_size[HAL_KIND_COUNT] = {
     sizeof(hal_comp_t), sizeof(hal_pin_t), sizeof(hal_param_t), sizeof(hal_oldname_t),
     sizeof(hal_sig_t), sizeof(hal_funct_t), sizeof(hal_thread_t), sizeof(hal_funct_entry_t),
@@ -163,19 +165,24 @@ int hal_attach_user(void)
     return 0;
 }
 
-/* Bump-allocate size bytes (8-aligned, 16 for >= 16 bytes); NULL when full. Mutex held. */
-void *halpr_malloc(long size)
+/* Bump-allocate size bytes at a multiple of align (a power of two); NULL when full. */
+static void *halpr_malloc_aligned(long size, long align)
 {
-    long align = size >= 16 ? 16 : 8;
     long start;
 
-    if (size < 8)
-        size = 8;
     start = (hal_data->shmem_used + align - 1) & ~(align - 1);
     if (size > hal_data->shmem_size - start)
         return NULL;
     hal_data->shmem_used = start + size;
     return SHMPTR(start);
+}
+
+/* Bump-allocate size bytes (8-aligned, 16 for >= 16 bytes); NULL when full. Mutex held. */
+void *halpr_malloc(long size)
+{
+    if (size < 8)
+        size = 8;
+    return halpr_malloc_aligned(size, size >= 16 ? 16 : 8);
 }
 
 /* Allocate never-freed memory in HAL shared memory (spec/hal.md §12). */
@@ -211,7 +218,8 @@ void *halpr_obj_alloc(int kind)
         k->free_ptr = *(int *)obj;
         k->recycled--;
     } else {
-        obj = halpr_malloc(size);
+        /* thread entries sit on a boundary of their (power-of-two) size: one cache line */
+        obj = kind == HAL_KIND_ENTRY ? halpr_malloc_aligned(size, size) : halpr_malloc(size);
         if (!obj) {
             HAL_ERR("insufficient memory for a new HAL object\n");
             return NULL;

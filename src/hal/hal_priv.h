@@ -196,6 +196,15 @@ typedef struct {
     hal_data_u value;           /* the value cell (data_ptr points here) */
 } hal_sig_t;
 
+/* the timing cells of one funct that the cycle updates, together in one
+   16-byte-aligned block (one cache line): <funct>.time's pointer cell and the
+   storage of <funct>.tmax and <funct>.tmax-increased */
+typedef struct {
+    hal_s32_t *time;            /* RT: pointer cell of the <funct>.time pin */
+    hal_s32_t tmax;             /* <funct>.tmax */
+    hal_bit_t tmax_increased;   /* <funct>.tmax-increased */
+} hal_funct_timing_t;
+
 /* an exported function */
 typedef struct {
     HAL_NODE_FIELDS;
@@ -205,21 +214,17 @@ typedef struct {
     int owner_ptr;              /* offset of the owning hal_comp_t */
     void *arg;                  /* RT-process address */
     void (*funct)(void *, long);/* RT-process address */
-    hal_s32_t **runtime;        /* RT address of the <funct>.time pointer cell */
-    hal_s32_t *maxtime;         /* RT address of <funct>.tmax */
-    hal_bit_t *maxtime_increased; /* RT address of <funct>.tmax-increased */
+    hal_funct_timing_t *timing; /* RT address of its timing cells */
 } hal_funct_t;
 
-/* one function slot in a thread (cached for the realtime cycle) */
+/* one function slot in a thread, 32 bytes on a 32-byte boundary so the fields
+   the realtime cycle reads share one cache line */
 typedef struct {
-    int free_link;              /* unused: entries are never recycled (the cycle may still walk one) */
+    void (*funct)(void *, long);/* cached from the funct (RT address) */
+    void *arg;
+    hal_funct_timing_t *timing;
     int next_ptr;               /* next entry in run order */
     int funct_ptr;              /* offset of hal_funct_t */
-    void (*funct)(void *, long);
-    void *arg;
-    hal_s32_t **runtime;
-    hal_s32_t *maxtime;
-    hal_bit_t *maxtime_increased;
 } hal_funct_entry_t;
 
 /* a realtime thread */

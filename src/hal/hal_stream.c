@@ -136,17 +136,16 @@ static int hal_stream_check(struct hal_stream_shm *f, const char *typestring)
     return 0;
 }
 
-/* Attach to an existing stream of `key`. */
+/* Attach to an existing stream of `key`; a missing stream is -ENOENT without a message
+   (callers such as halsampler report it in their own words). */
 int hal_stream_attach(hal_stream_t *stream, int comp_id, int key, const char *typestring)
 {
     int id = shmget(rtapi_instance_key(key), 0, 0600);
     void *p;
     int rc;
 
-    if (id < 0) {
-        HAL_ERR("stream: no stream with key 0x%x\n", key);
+    if (id < 0)
         return -ENOENT;
-    }
     p = shmat(id, NULL, 0);
     if (p == (void *)-1)
         return -ENOMEM;

@@ -92,9 +92,7 @@ static int hal_addf_common(const char *funct_name, const char *thread_name, int 
         e->funct_ptr = SHMOFF(f);
         e->funct = f->funct;
         e->arg = f->arg;
-        e->runtime = f->runtime;
-        e->maxtime = f->maxtime;
-        e->maxtime_increased = f->maxtime_increased;
+        e->timing = f->timing;
         f->users++;
         hal_entry_insert(init ? &t->init_list : &t->funct_list, index, e);
     }

@@ -24,14 +24,14 @@ static inline unsigned long long hal_ticks(int tsc)
     return (unsigned long long)rtapi_get_time();
 }
 
-/* Tick difference to ns, clamped to the s32 range of the .time items (mult < 2^32). */
-static inline int32_t hal_ticks_ns(unsigned long long d, int tsc)
+/* Tick difference to ns, clamped to the s32 range of the .time items (mult < 2^32);
+   written so the compiler can use conditional moves instead of branches. */
+static inline __attribute__((always_inline)) int32_t hal_ticks_ns(unsigned long long d, int tsc)
 {
-    if (d > 0xffffffffULL)
-        d = 0xffffffffULL;
+    d = d > 0xffffffffULL ? 0xffffffffULL : d;
     if (tsc)
         d = (d * hal_tsc_mult) >> 32;
-    return d > 0x7fffffffULL ? 0x7fffffff : (int32_t)d;
+    return (int32_t)(d > 0x7fffffffULL ? 0x7fffffffULL : d);
 }
 
 /* 1 when /proc/cpuinfo says the TSC runs at a constant rate. */
@@ -72,11 +72,24 @@ void hal_clock_calibrate(void)
 #endif
 }
 
-/* One cyclic pass: every funct with the nominal period, timing each, then the thread. */
-static void hal_thread_cycle(hal_thread_t *t)
+/* Store a funct's time and update its tmax / tmax-increased without branches. */
+static inline __attribute__((always_inline)) void hal_funct_timed(hal_funct_timing_t *tm,
+                                                                  int32_t d)
+{
+    int32_t m = tm->tmax;
+    int grew = d > m;
+
+    *tm->time = d;
+    tm->tmax = grew ? d : m;
+    tm->tmax_increased = grew;
+}
+
+/* One cyclic pass: every funct with the nominal period; one clock read per funct
+   boundary ends one funct's time and starts the next one's. tsc is a constant in
+   each of the two expansions, so the loop holds no clock-kind test. */
+static inline __attribute__((always_inline)) void hal_thread_pass(hal_thread_t *t, int tsc)
 {
     char *const base = hal_shmem_base;
-    const int tsc = hal_clock_tsc;
     const long period = t->period;
     unsigned long long start = hal_ticks(tsc), t0 = start, t1;
     int off = __atomic_load_n(&t->funct_list, __ATOMIC_ACQUIRE);
@@ -86,14 +99,7 @@ static void hal_thread_cycle(hal_thread_t *t)
         hal_funct_entry_t *e = (hal_funct_entry_t *)(base + off);
         e->funct(e->arg, period);
         t1 = hal_ticks(tsc);
-        d = hal_ticks_ns(t1 - t0, tsc);
-        **e->runtime = d;
-        if (d > *e->maxtime) {
-            *e->maxtime = d;
-            *e->maxtime_increased = 1;
-        } else if (*e->maxtime_increased) {
-            *e->maxtime_increased = 0;
-        }
+        hal_funct_timed(e->timing, hal_ticks_ns(t1 - t0, tsc));
         t0 = t1;
         off = __atomic_load_n(&e->next_ptr, __ATOMIC_ACQUIRE);
     }
@@ -102,6 +108,15 @@ static void hal_thread_cycle(hal_thread_t *t)
     if (d > *t->maxtime)
         *t->maxtime = d;
     **t->threadbeat += 1;
+}
+
+/* One cyclic pass timed with the TSC or with CLOCK_MONOTONIC. */
+static void hal_thread_cycle(hal_thread_t *t)
+{
+    if (hal_clock_tsc)
+        hal_thread_pass(t, 1);
+    else
+        hal_thread_pass(t, 0);
 }
 
 /* The init cycle: run the init list once instead of the cyclic list. */

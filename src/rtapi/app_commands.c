@@ -132,8 +132,7 @@ static int cmd_newinst(app_reply_t *reply, int argc, char **argv, int *exit_requ
     }
     *(void **)&newinst = dlsym(RTLD_DEFAULT, "hal_newinst");
     if (!newinst) {
-        app_error(reply, "%s: newinst: the loaded HAL has no instance constructors\n",
-                  argv[1]);
+        app_error(reply, "%s: newinst: hal_lib is required, but not loaded\n", argv[1]);
         return -ENOSYS;
     }
     return newinst(argv[1], argv[2], argc - 3, (const char **)argv + 3);

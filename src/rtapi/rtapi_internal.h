@@ -24,9 +24,9 @@ int rtapi_msg_queue(int level, const char *fmt, va_list ap);
 /* Write out everything queued so far. */
 void rtapi_msg_flush(void);
 
-/* One task slot; tasks[] lives in rtapi_task.c. */
+/* One task, allocated by rtapi_task_new; the table of pointers lives in rtapi_task.c. */
 typedef struct {
-    int used;                 /* slot allocated by rtapi_task_new */
+    int id;                   /* index in rtapi_tasks */
     int started;              /* thread created */
     pthread_t thread;
     void (*code)(void *);
@@ -43,7 +43,7 @@ typedef struct {
     rtapi_task_stats_t stats;
 } rtapi_task_t;
 
-extern rtapi_task_t rtapi_tasks[RTAPI_MAX_TASKS];
+extern rtapi_task_t *rtapi_tasks[RTAPI_MAX_TASKS];
 /* Id of the calling task thread, -1 elsewhere. */
 extern __thread int rtapi_self_task;
 /* Body of a task thread: set up scheduling, run the task code. */

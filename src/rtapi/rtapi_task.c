@@ -3,13 +3,14 @@
 #include <pthread.h>
 #include <sched.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include "rtapi.h"
 #include "rtapi_internal.h"
 
 #define MIN_STACK_BYTES (1024 * 1024)
 
-rtapi_task_t rtapi_tasks[RTAPI_MAX_TASKS];
+rtapi_task_t *rtapi_tasks[RTAPI_MAX_TASKS];
 static pthread_mutex_t table_lock = PTHREAD_MUTEX_INITIALIZER;
 static pthread_mutex_t pause_lock = PTHREAD_MUTEX_INITIALIZER;
 static pthread_cond_t pause_cond = PTHREAD_COND_INITIALIZER;
@@ -17,15 +18,16 @@ static pthread_cond_t pause_cond = PTHREAD_COND_INITIALIZER;
 /* The task for id, or NULL when id is out of range or unused. */
 static rtapi_task_t *task_get(int task_id)
 {
-    if (task_id < 0 || task_id >= RTAPI_MAX_TASKS || !rtapi_tasks[task_id].used)
+    if (task_id < 0 || task_id >= RTAPI_MAX_TASKS)
         return NULL;
-    return &rtapi_tasks[task_id];
+    return rtapi_tasks[task_id];
 }
 
-/* Allocate a task slot; the thread starts with rtapi_task_start. */
+/* Allocate a task and a table slot; the thread starts with rtapi_task_start. */
 int rtapi_task_new(void (*taskcode)(void *), void *arg, int prio, int owner,
                    unsigned long int stacksize, int uses_fp)
 {
+    rtapi_task_t *task;
     int id;
 
     (void)uses_fp;
@@ -37,20 +39,24 @@ int rtapi_task_new(void (*taskcode)(void *), void *arg, int prio, int owner,
                         rtapi_prio_highest(), prio);
         return -EINVAL;
     }
+    task = calloc(1, sizeof *task);
+    if (!task)
+        return -ENOMEM;
+    task->code = taskcode;
+    task->arg = arg;
+    task->prio = prio;
+    task->owner = owner;
+    task->stacksize = stacksize;
     pthread_mutex_lock(&table_lock);
-    for (id = 0; id < RTAPI_MAX_TASKS && rtapi_tasks[id].used; id++)
+    for (id = 0; id < RTAPI_MAX_TASKS && rtapi_tasks[id]; id++)
         ;
     if (id < RTAPI_MAX_TASKS) {
-        memset(&rtapi_tasks[id], 0, sizeof rtapi_tasks[id]);
-        rtapi_tasks[id].used = 1;
-        rtapi_tasks[id].code = taskcode;
-        rtapi_tasks[id].arg = arg;
-        rtapi_tasks[id].prio = prio;
-        rtapi_tasks[id].owner = owner;
-        rtapi_tasks[id].stacksize = stacksize;
+        task->id = id;
+        rtapi_tasks[id] = task;
     }
     pthread_mutex_unlock(&table_lock);
     if (id == RTAPI_MAX_TASKS) {
+        free(task);
         rtapi_print_msg(RTAPI_MSG_ERR, "rtapi: task_new: all %d task slots in use\n",
                         RTAPI_MAX_TASKS);
         return -ENOMEM;
@@ -149,8 +155,9 @@ int rtapi_task_delete(int task_id)
         rtapi_tasks_relock(depth);
     }
     pthread_mutex_lock(&table_lock);
-    memset(task, 0, sizeof *task);
+    rtapi_tasks[task_id] = NULL;
     pthread_mutex_unlock(&table_lock);
+    free(task);
     return 0;
 }
 

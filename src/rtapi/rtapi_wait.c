@@ -11,6 +11,7 @@
 #define STACK_PREFAULT_BYTES (256 * 1024)
 
 __thread int rtapi_self_task = -1;
+static __thread rtapi_task_t *self_task;   /* the calling task's record (no table lookup in the cycle) */
 /* Non-realtime mode: held by a task except while it sleeps, so tasks never overlap. */
 static pthread_mutex_t nonrt_lock = PTHREAD_MUTEX_INITIALIZER;
 static __thread int nonrt_depth;
@@ -70,7 +71,8 @@ void *rtapi_task_thread(void *arg)
     char name[16];
 
     pthread_setcancelstate(PTHREAD_CANCEL_DISABLE, NULL);
-    rtapi_self_task = (int)(task - rtapi_tasks);
+    rtapi_self_task = task->id;
+    self_task = task;
     snprintf(name, sizeof name, "rtapi_app:T#%d", rtapi_self_task);
     pthread_setname_np(pthread_self(), name);
     if (rtapi_rt_enabled())
@@ -95,7 +97,7 @@ static void report_overrun(rtapi_task_t *task)
     rtapi_print_msg(RTAPI_MSG_ERR, "Unexpected realtime delay on task %d with period %lld\n"
                     "This Message will only display once per session.\n"
                     "Run the Latency Test and resolve before continuing.\n",
-                    (int)(task - rtapi_tasks), task->period_ns);
+                    task->id, task->period_ns);
 }
 
 /* Sleep until the absolute deadline with the mutex released; cancellable only here. */
@@ -151,9 +153,9 @@ void rtapi_wait(void)
     rtapi_task_t *task;
     long long now, deadline, late;
 
-    if (rtapi_self_task < 0)
+    task = self_task;
+    if (!task)
         return;
-    task = &rtapi_tasks[rtapi_self_task];
     now = rtapi_get_time();
     account_cycle(task, now);
     exit_if_deleting(task);
@@ -179,9 +181,7 @@ void rtapi_wait(void)
 /* Absolute time the calling task wakes next. */
 long long rtapi_task_pll_get_reference(void)
 {
-    if (rtapi_self_task < 0)
-        return 0;
-    return rtapi_tasks[rtapi_self_task].next_deadline;
+    return self_task ? self_task->next_deadline : 0;
 }
 
 /* Set the per-period correction, clamped to +-1% of the period. */
@@ -190,9 +190,9 @@ int rtapi_task_pll_set_correction(long value)
     rtapi_task_t *task;
     long limit;
 
-    if (rtapi_self_task < 0)
+    task = self_task;
+    if (!task)
         return -EINVAL;
-    task = &rtapi_tasks[rtapi_self_task];
     limit = (long)(task->period_ns / 100);
     if (value > limit)
         value = limit;
@@ -207,9 +207,9 @@ int rtapi_task_self_resync(void)
 {
     rtapi_task_t *task;
 
-    if (rtapi_self_task < 0)
+    task = self_task;
+    if (!task)
         return -EINVAL;
-    task = &rtapi_tasks[rtapi_self_task];
     task->next_deadline = rtapi_get_time() + task->period_ns;
     return 0;
 }

@@ -46,6 +46,23 @@ bool parse_magnitude(const char *p, unsigned long long &mag, const char **end, b
     return true;
 }
 
+// An integer's text split into sign and magnitude.
+struct IntText {
+    bool negative = false;
+    unsigned long long mag = 0;
+    const char *end = nullptr;  // past the digits
+    bool overflow = false;      // the magnitude does not fit 64 bits
+};
+
+// Parse an optional sign and an integer magnitude; false when no digits follow.
+bool parse_integer(const std::string &text, IntText &num)
+{
+    const char *p = text.c_str();
+    num.negative = *p == '-';
+    if (*p == '-' || *p == '+') p++;
+    return parse_magnitude(p, num.mag, &num.end, num.overflow);
+}
+
 } // namespace
 
 // Strip whitespace on both ends.
@@ -77,33 +94,23 @@ bool ini_valid_identifier(const std::string &name)
 // Signed integer conversion with range check.
 IniConv ini_parse_int(const std::string &text, long long &value)
 {
-    const char *p = text.c_str();
-    bool negative = *p == '-';
-    if (*p == '-' || *p == '+') p++;
-    unsigned long long mag = 0;
-    const char *end = nullptr;
-    bool overflow = false;
-    if (!parse_magnitude(p, mag, &end, overflow)) return IniConv::invalid;
-    unsigned long long limit = negative ? (unsigned long long)LLONG_MAX + 1 : LLONG_MAX;
-    if (overflow || mag > limit) return IniConv::range;
-    value = negative ? (long long)(0ULL - mag) : (long long)mag;
-    return tail_state(end);
+    IntText num;
+    if (!parse_integer(text, num)) return IniConv::invalid;
+    unsigned long long limit = num.negative ? (unsigned long long)LLONG_MAX + 1 : LLONG_MAX;
+    if (num.overflow || num.mag > limit) return IniConv::range;
+    value = num.negative ? (long long)(0ULL - num.mag) : (long long)num.mag;
+    return tail_state(num.end);
 }
 
 // Unsigned integer conversion; negative values wrap modulo 2^64.
 IniConv ini_parse_uint(const std::string &text, unsigned long long &value, bool &wrapped)
 {
-    const char *p = text.c_str();
-    bool negative = *p == '-';
-    if (*p == '-' || *p == '+') p++;
-    unsigned long long mag = 0;
-    const char *end = nullptr;
-    bool overflow = false;
-    if (!parse_magnitude(p, mag, &end, overflow)) return IniConv::invalid;
-    if (overflow) return IniConv::range;
-    wrapped = negative && mag != 0;
-    value = negative ? 0ULL - mag : mag;
-    return tail_state(end);
+    IntText num;
+    if (!parse_integer(text, num)) return IniConv::invalid;
+    if (num.overflow) return IniConv::range;
+    wrapped = num.negative && num.mag != 0;
+    value = num.negative ? 0ULL - num.mag : num.mag;
+    return tail_state(num.end);
 }
 
 // Real conversion in the C locale, whatever the program's locale.

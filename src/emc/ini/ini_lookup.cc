@@ -108,37 +108,38 @@ std::optional<bool> IniFile::FindBool(const std::string &key, const std::string 
     return value;
 }
 
+// An enum value of key through map; diagnoses `invalid` when map knows no such word.
+template <typename T>
+std::optional<T> IniFile::FindMapped(const std::string &key, const std::string &section, int num,
+                                     std::optional<T> (*map)(const std::string &),
+                                     const char *invalid) const
+{
+    const IniEntry *entry = FindEntry(key, section, num);
+    if (!entry) return std::nullopt;
+    std::optional<T> value = map(ini_trim(entry->value));
+    if (!value) Diagnose(*entry, "error", invalid);
+    return value;
+}
+
 // LINEAR_UNITS value as units per mm.
 std::optional<double> IniFile::FindLinearUnits(const std::string &key,
                                                const std::string &section, int num) const
 {
-    const IniEntry *entry = FindEntry(key, section, num);
-    if (!entry) return std::nullopt;
-    std::optional<double> units = MapLinearUnits(ini_trim(entry->value));
-    if (!units) Diagnose(*entry, "error", "Invalid linear units");
-    return units;
+    return FindMapped(key, section, num, MapLinearUnits, "Invalid linear units");
 }
 
 // ANGULAR_UNITS value as units per degree.
 std::optional<double> IniFile::FindAngularUnits(const std::string &key,
                                                 const std::string &section, int num) const
 {
-    const IniEntry *entry = FindEntry(key, section, num);
-    if (!entry) return std::nullopt;
-    std::optional<double> units = MapAngularUnits(ini_trim(entry->value));
-    if (!units) Diagnose(*entry, "error", "Invalid angular units");
-    return units;
+    return FindMapped(key, section, num, MapAngularUnits, "Invalid angular units");
 }
 
 // Joint TYPE value (1 linear, 2 angular).
 std::optional<int> IniFile::FindJointType(const std::string &key, const std::string &section,
                                           int num) const
 {
-    const IniEntry *entry = FindEntry(key, section, num);
-    if (!entry) return std::nullopt;
-    std::optional<int> type = MapJointType(ini_trim(entry->value));
-    if (!type) Diagnose(*entry, "error", "Invalid joint type");
-    return type;
+    return FindMapped(key, section, num, MapJointType, "Invalid joint type");
 }
 
 // mm|metric -> 1, in|inch|imperial -> 1/25.4.

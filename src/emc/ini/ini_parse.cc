@@ -57,6 +57,8 @@ private:
     void HandleLine(const std::string &file, int line, const std::string &text, int depth);
     void HandleSection(const std::string &file, int line, const std::string &text);
     void HandleKey(const std::string &file, int line, const std::string &text);
+    bool CheckName(const std::string &file, int line, const char *kind, const std::string &name,
+                   const char *empty_error);
     void HandleInclude(const std::string &file, int line, const std::string &name, int depth);
 
     IniFile &ini_;
@@ -125,6 +127,22 @@ void IniParser::HandleLine(const std::string &file, int line, const std::string 
         HandleKey(file, line, body);
 }
 
+// Report an empty name (empty_error) or one that is not an identifier; true when it is usable.
+bool IniParser::CheckName(const std::string &file, int line, const char *kind,
+                          const std::string &name, const char *empty_error)
+{
+    if (name.empty()) {
+        Report(file, line, "error", empty_error);
+        return false;
+    }
+    if (!ini_valid_identifier(name)) {
+        Report(file, line, "error", std::string("Invalid ") + kind + " '" + name +
+                                        "'. Identifier contains invalid character(s)");
+        return false;
+    }
+    return true;
+}
+
 // "[NAME] trailing": start or resume a section.
 void IniParser::HandleSection(const std::string &file, int line, const std::string &text)
 {
@@ -135,15 +153,9 @@ void IniParser::HandleSection(const std::string &file, int line, const std::stri
         return;
     }
     std::string name = ini_trim(text.substr(1, close - 1));
-    if (name.empty()) {
-        Report(file, line, "error", "Invalid section. No content between '[' and ']'");
+    if (!CheckName(file, line, "section", name,
+                   "Invalid section. No content between '[' and ']'"))
         return;
-    }
-    if (!ini_valid_identifier(name)) {
-        Report(file, line, "error",
-               "Invalid section '" + name + "'. Identifier contains invalid character(s)");
-        return;
-    }
     std::string rest = ini_trim(text.substr(close + 1));
     if (!rest.empty() && rest[0] != '#' && rest[0] != ';')
         Report(file, line, "warning", "Section header has trailing content, ignored");
@@ -163,15 +175,7 @@ void IniParser::HandleKey(const std::string &file, int line, const std::string &
 {
     size_t end = text.find_first_of(" \t=");
     std::string tag = text.substr(0, end);
-    if (tag.empty()) {
-        Report(file, line, "error", "Missing tag identifier before '='");
-        return;
-    }
-    if (!ini_valid_identifier(tag)) {
-        Report(file, line, "error",
-               "Invalid tag '" + tag + "'. Identifier contains invalid character(s)");
-        return;
-    }
+    if (!CheckName(file, line, "tag", tag, "Missing tag identifier before '='")) return;
     size_t eq = text.find_first_not_of(" \t", end);
     if (eq == std::string::npos || text[eq] != '=') {
         Report(file, line, "error", "Invalid tag '" + tag + "'. Expected '=' after tag identifier");

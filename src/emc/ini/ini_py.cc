@@ -75,92 +75,57 @@ PyObject *py_hasvariable(PyIni *self, PyObject *args)
     return PyBool_FromLong(ini->FindEntry(var, sec, num) != nullptr);
 }
 
-// getstring(sec, var[, num], *, fallback=None) -> str or fallback
-PyObject *py_getstring(PyIni *self, PyObject *args, PyObject *kw)
+// A Python str of raw INI text (undecodable bytes kept as surrogates).
+PyObject *to_py(const std::string &value)
+{
+    return PyUnicode_DecodeUTF8(value.data(), Py_ssize_t(value.size()), "surrogateescape");
+}
+
+// A Python bool.
+PyObject *to_py(bool value)
+{
+    return PyBool_FromLong(value);
+}
+
+// A Python int of a signed value.
+PyObject *to_py(long long value)
+{
+    return PyLong_FromLongLong(value);
+}
+
+// A Python int of an unsigned value.
+PyObject *to_py(unsigned long long value)
+{
+    return PyLong_FromUnsignedLongLong(value);
+}
+
+// A Python int of an enum value.
+PyObject *to_py(int value)
+{
+    return PyLong_FromLong(value);
+}
+
+// A Python float.
+PyObject *to_py(double value)
+{
+    return PyFloat_FromDouble(value);
+}
+
+// A typed lookup method: (sec, var[, num], *, fallback=None) -> value through Find, or fallback.
+template <typename T,
+          std::optional<T> (IniFile::*Find)(const std::string &, const std::string &, int) const>
+PyObject *py_lookup(PyIni *self, PyObject *args, PyObject *kw)
 {
     Lookup l;
     const IniFile *ini = ini_py_file(self);
     if (!ini || !parse_lookup(args, kw, l)) return nullptr;
-    std::optional<std::string> value = ini->Find(l.var, l.sec, l.num);
-    if (!value) return fallback_of(l);
-    return PyUnicode_DecodeUTF8(value->data(), Py_ssize_t(value->size()), "surrogateescape");
+    std::optional<T> value = (ini->*Find)(l.var, l.sec, l.num);
+    return value ? to_py(*value) : fallback_of(l);
 }
 
-// getbool(...) -> True/False or fallback
-PyObject *py_getbool(PyIni *self, PyObject *args, PyObject *kw)
-{
-    Lookup l;
-    const IniFile *ini = ini_py_file(self);
-    if (!ini || !parse_lookup(args, kw, l)) return nullptr;
-    std::optional<bool> value = ini->FindBool(l.var, l.sec, l.num);
-    return value ? PyBool_FromLong(*value) : fallback_of(l);
-}
-
-// getsint(...) -> int or fallback
-PyObject *py_getsint(PyIni *self, PyObject *args, PyObject *kw)
-{
-    Lookup l;
-    const IniFile *ini = ini_py_file(self);
-    if (!ini || !parse_lookup(args, kw, l)) return nullptr;
-    std::optional<long long> value = ini->FindInt(l.var, l.sec, l.num);
-    return value ? PyLong_FromLongLong(*value) : fallback_of(l);
-}
-
-// getuint(...) -> int or fallback
-PyObject *py_getuint(PyIni *self, PyObject *args, PyObject *kw)
-{
-    Lookup l;
-    const IniFile *ini = ini_py_file(self);
-    if (!ini || !parse_lookup(args, kw, l)) return nullptr;
-    std::optional<unsigned long long> value = ini->FindUInt(l.var, l.sec, l.num);
-    return value ? PyLong_FromUnsignedLongLong(*value) : fallback_of(l);
-}
-
-// getreal(...) -> float or fallback
-PyObject *py_getreal(PyIni *self, PyObject *args, PyObject *kw)
-{
-    Lookup l;
-    const IniFile *ini = ini_py_file(self);
-    if (!ini || !parse_lookup(args, kw, l)) return nullptr;
-    std::optional<double> value = ini->FindReal(l.var, l.sec, l.num);
-    return value ? PyFloat_FromDouble(*value) : fallback_of(l);
-}
-
-// getlinearunits / getangularunits(...) -> float or fallback
-PyObject *py_getunits(PyIni *self, PyObject *args, PyObject *kw, bool linear)
-{
-    Lookup l;
-    const IniFile *ini = ini_py_file(self);
-    if (!ini || !parse_lookup(args, kw, l)) return nullptr;
-    std::optional<double> value = linear ? ini->FindLinearUnits(l.var, l.sec, l.num)
-                                         : ini->FindAngularUnits(l.var, l.sec, l.num);
-    return value ? PyFloat_FromDouble(*value) : fallback_of(l);
-}
-
-// getlinearunits(sec, var[, num], *, fallback=None) -> units per mm
-PyObject *py_getlinearunits(PyIni *self, PyObject *args, PyObject *kw)
-{
-    return py_getunits(self, args, kw, true);
-}
-
-// getangularunits(sec, var[, num], *, fallback=None) -> units per degree
-PyObject *py_getangularunits(PyIni *self, PyObject *args, PyObject *kw)
-{
-    return py_getunits(self, args, kw, false);
-}
-
-// getjointtype(...) -> 1 (LINEAR), 2 (ANGULAR) or fallback
-PyObject *py_getjointtype(PyIni *self, PyObject *args, PyObject *kw)
-{
-    Lookup l;
-    const IniFile *ini = ini_py_file(self);
-    if (!ini || !parse_lookup(args, kw, l)) return nullptr;
-    std::optional<int> value = ini->FindJointType(l.var, l.sec, l.num);
-    return value ? PyLong_FromLong(*value) : fallback_of(l);
-}
-
-// map*(enumstr, *, fallback=None): which = 0 linear, 1 angular, 2 joint type.
-PyObject *map_enum(PyObject *args, PyObject *kw, int which)
+// map*(enumstr, *, fallback=None): the value Map gives the word, or fallback.
+template <typename T, std::optional<T> (*Map)(const std::string &)>
+PyObject *py_map(PyObject *, PyObject *args, PyObject *kw)
 {
     static const char *kwlist[] = {"", "fallback", nullptr};
     const char *text = nullptr;
@@ -168,34 +133,10 @@ PyObject *map_enum(PyObject *args, PyObject *kw, int which)
     if (!PyArg_ParseTupleAndKeywords(args, kw, "s|$O", const_cast<char **>(kwlist), &text,
                                      &fallback))
         return nullptr;
-    if (which == 2) {
-        std::optional<int> type = IniFile::MapJointType(text);
-        if (type) return PyLong_FromLong(*type);
-    } else {
-        std::optional<double> units = which == 0 ? IniFile::MapLinearUnits(text)
-                                                 : IniFile::MapAngularUnits(text);
-        if (units) return PyFloat_FromDouble(*units);
-    }
+    std::optional<T> value = Map(text);
+    if (value) return to_py(*value);
     Py_INCREF(fallback);
     return fallback;
-}
-
-// maplinearunits(enumstr, *, fallback=None) -> units per mm
-PyObject *py_maplinearunits(PyObject *, PyObject *args, PyObject *kw)
-{
-    return map_enum(args, kw, 0);
-}
-
-// mapangularunits(enumstr, *, fallback=None) -> units per degree
-PyObject *py_mapangularunits(PyObject *, PyObject *args, PyObject *kw)
-{
-    return map_enum(args, kw, 1);
-}
-
-// mapjointtype(enumstr, *, fallback=None) -> 1 or 2
-PyObject *py_mapjointtype(PyObject *, PyObject *args, PyObject *kw)
-{
-    return map_enum(args, kw, 2);
 }
 
 // Method table entries: lookups take keywords (fallback=), the rest positional arguments only.
@@ -211,20 +152,31 @@ PyObject *py_mapjointtype(PyObject *, PyObject *args, PyObject *kw)
 PyMethodDef ini_methods[] = {
     PLAIN("hassection", py_hassection, "hassection(sec) -> bool"),
     PLAIN("hasvariable", py_hasvariable, "hasvariable(sec, var[, num]) -> bool"),
-    LOOKUP("getstring", py_getstring, "getstring(sec, var[, num], *, fallback=None) -> str"),
-    LOOKUP("find", py_getstring, "alias of getstring"),
-    LOOKUP("getbool", py_getbool, "getbool(sec, var[, num], *, fallback=None) -> bool"),
-    LOOKUP("getsint", py_getsint, "getsint(sec, var[, num], *, fallback=None) -> int"),
-    LOOKUP("getint", py_getsint, "alias of getsint"),
-    LOOKUP("getuint", py_getuint, "getuint(sec, var[, num], *, fallback=None) -> int"),
-    LOOKUP("getreal", py_getreal, "getreal(sec, var[, num], *, fallback=None) -> float"),
-    LOOKUP("getfloat", py_getreal, "alias of getreal"),
-    LOOKUP("getlinearunits", py_getlinearunits, "LINEAR_UNITS value as units per mm"),
-    LOOKUP("getangularunits", py_getangularunits, "ANGULAR_UNITS value as units per degree"),
-    LOOKUP("getjointtype", py_getjointtype, "joint TYPE: 1 LINEAR, 2 ANGULAR"),
-    LOOKUP_STATIC("maplinearunits", py_maplinearunits, "maplinearunits(str, *, fallback=None)"),
-    LOOKUP_STATIC("mapangularunits", py_mapangularunits, "mapangularunits(str, *, fallback=None)"),
-    LOOKUP_STATIC("mapjointtype", py_mapjointtype, "mapjointtype(str, *, fallback=None)"),
+    LOOKUP("getstring", (py_lookup<std::string, &IniFile::Find>),
+           "getstring(sec, var[, num], *, fallback=None) -> str"),
+    LOOKUP("find", (py_lookup<std::string, &IniFile::Find>), "alias of getstring"),
+    LOOKUP("getbool", (py_lookup<bool, &IniFile::FindBool>),
+           "getbool(sec, var[, num], *, fallback=None) -> bool"),
+    LOOKUP("getsint", (py_lookup<long long, &IniFile::FindInt>),
+           "getsint(sec, var[, num], *, fallback=None) -> int"),
+    LOOKUP("getint", (py_lookup<long long, &IniFile::FindInt>), "alias of getsint"),
+    LOOKUP("getuint", (py_lookup<unsigned long long, &IniFile::FindUInt>),
+           "getuint(sec, var[, num], *, fallback=None) -> int"),
+    LOOKUP("getreal", (py_lookup<double, &IniFile::FindReal>),
+           "getreal(sec, var[, num], *, fallback=None) -> float"),
+    LOOKUP("getfloat", (py_lookup<double, &IniFile::FindReal>), "alias of getreal"),
+    LOOKUP("getlinearunits", (py_lookup<double, &IniFile::FindLinearUnits>),
+           "LINEAR_UNITS value as units per mm"),
+    LOOKUP("getangularunits", (py_lookup<double, &IniFile::FindAngularUnits>),
+           "ANGULAR_UNITS value as units per degree"),
+    LOOKUP("getjointtype", (py_lookup<int, &IniFile::FindJointType>),
+           "joint TYPE: 1 LINEAR, 2 ANGULAR"),
+    LOOKUP_STATIC("maplinearunits", (py_map<double, IniFile::MapLinearUnits>),
+                  "maplinearunits(str, *, fallback=None)"),
+    LOOKUP_STATIC("mapangularunits", (py_map<double, IniFile::MapAngularUnits>),
+                  "mapangularunits(str, *, fallback=None)"),
+    LOOKUP_STATIC("mapjointtype", (py_map<int, IniFile::MapJointType>),
+                  "mapjointtype(str, *, fallback=None)"),
     PLAIN("getsections", ini_py_getsections, "getsections() -> list of section names"),
     PLAIN("getvariables", ini_py_getvariables, "getvariables([sec]) -> list of (name, value)"),
     PLAIN("findall", ini_py_findall, "findall(sec[, var]) -> list of values"),

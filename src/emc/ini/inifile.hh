@@ -94,6 +94,10 @@ private:
     const IniSection *FindSection(const std::string &name) const;
     void Diagnose(const IniEntry &entry, const char *level, const std::string &what) const;
     bool NumberUsable(const IniEntry &entry, int conv, const char *kind) const;
+    template <typename T>
+    std::optional<T> FindMapped(const std::string &key, const std::string &section, int num,
+                                std::optional<T> (*map)(const std::string &),
+                                const char *invalid) const;
 
     std::vector<IniSection> sections_;
     std::string path_;

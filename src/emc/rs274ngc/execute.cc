@@ -56,6 +56,7 @@ InterpStatus Interp::execute_block(Block &b)
     finish = do_motion(b) || finish;
     InterpStatus st = do_stop(b);
     if (st != INTERP_OK) return st;
+    run_remap(b);
     return finish ? INTERP_EXECUTE_FINISH : INTERP_OK;
 }
 

@@ -214,6 +214,8 @@ InterpStatus Interp::run_line(const std::string &raw)
             OKind kind;
             if (!peek_oword(raw, name, kind) || !skip_match(name, kind)) return INTERP_OK;
         }
+        s_.params[5600] = real_out_.get_external_toolchanger_fault();
+        s_.params[5601] = real_out_.get_external_toolchanger_reason();
         Block b;
         parse_line(raw, b);
         if (b.block_delete && block_delete_) return INTERP_OK;
@@ -282,5 +284,6 @@ bool Interp::load_ini(const std::string &path)
         }
     }
     if (auto v = ini.Find("PARAMETER_FILE", "RS274NGC")) var_file_ = *v;
+    load_remaps(ini.FindAll("REMAP", "RS274NGC"));
     return true;
 }

@@ -37,6 +37,13 @@ struct FlowFrame {
     long iterations = 0;           // loop passes so far (runaway guard)
 };
 
+// One REMAP= entry of the INI file (ngc procedures only).
+struct RemapDef {
+    int group = -1;                // modal group the code joins
+    std::string argspec;           // letters: upper = required, lower = optional, '@' positional
+    std::string ngc;               // subroutine name
+};
+
 // One subroutine call level.
 struct CallFrame {
     std::shared_ptr<SourceFile> file;
@@ -50,6 +57,8 @@ struct CallFrame {
     SavedModal saved;              // M70/M73 context of this level
     bool autorestore = false;      // M73: restore on return
     bool fanuc = false;            // M98 call (#1-#30 global)
+    bool remap = false;            // a REMAP procedure (counts in _remap_level)
+    int remap_motion = -1;         // remapped motion code to restore on return
     long fanuc_count = 0;          // M98 L repeats left
     long fanuc_iterations = 0;
 };
@@ -239,6 +248,10 @@ private:
     void modal_restore(const SavedModal &m);
     void restore_coolant(const SavedModal &m, bool first);
 
+    // REMAP= support (remap.cc)
+    void load_remaps(const std::vector<std::string> &lines);
+    bool run_remap(Block &b);
+
     // parameter file (varfile.cc) and predefined parameters (predef.cc)
     void read_var_file();
     void write_var_file();
@@ -266,6 +279,8 @@ private:
     double value_ = 0, value_returned_ = 0;
     long line_budget_ = -1;
     std::string ini_path_;
+    std::map<int, RemapDef> g_remaps_, m_remaps_;
+    int remap_level_ = 0;
 };
 
 #endif

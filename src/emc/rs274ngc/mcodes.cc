@@ -8,6 +8,8 @@ void Interp::do_io(Block &b)
 {
     int m = b.m_modes[MG_IO];
     if (m == -1) return;
+    if (s_.comp_side != CANON_SIDE_OFF)
+        throw InterpError("Cannot use M62-M68 with cutter radius compensation on");
     if (m == 66) return do_wait_input(b);
     if (m >= 62 && m <= 65) {
         if (!b.word('p')) throw InterpError("No valid P word with M" + std::to_string(m));

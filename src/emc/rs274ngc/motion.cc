@@ -31,6 +31,7 @@ bool Interp::do_motion(Block &b)
     if (explicit_motion != -1) s_.motion_mode = explicit_motion;
     int m = s_.motion_mode;
     if (explicit_motion == -1 && !any_axis(b)) return false;
+    if (g_remaps_.count(m)) return false;
     if (m == 800) {
         out().comment("interpreter: motion mode set to none");
         s_.cycle_last = -1;
@@ -213,7 +214,7 @@ void Interp::probe_result()
 void Interp::move_cycle(Block &b)
 {
     int m = s_.motion_mode;
-    if (s_.comp_side != CANON_SIDE_OFF && m != 760 && m < 700)
+    if (s_.comp_side != CANON_SIDE_OFF)
         throw InterpError("Cannot use canned cycles with cutter radius compensation");
     if (m == 760) {
         if (!cycles::execute_g76) throw InterpError("G76 threading cycle not supported");

@@ -139,8 +139,6 @@ void Interp::g10_l2(const Block &b, int l)
     int p = clamp_int(pv);
     if (std::fabs(pv - p) > 0.0001 || p < 0 || p > 9)
         throw InterpError("P value out of range (0-9) with G10 L2");
-    if (s_.comp_side != CANON_SIDE_OFF)
-        throw InterpError("Cannot change coordinate systems with cutter radius compensation on");
     int index = p == 0 ? s_.origin_index : p;
     double k = s_.machine_to_program();
     Pose m = program_to_machine_pose(s_.current);

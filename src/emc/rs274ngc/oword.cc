@@ -198,6 +198,8 @@ void Interp::pop_call()
     CallFrame &f = calls_.back();
     if (!f.fanuc)
         for (int i = 1; i <= 30; i++) s_.params[i] = f.saved_args[i];
+    if (f.remap) remap_level_--;
+    if (f.remap_motion != -1) s_.motion_mode = f.remap_motion;
     calls_.pop_back();
     s_.call_level = (int)calls_.size() - 1;
 }

@@ -217,7 +217,12 @@ void Interp::parse_g(const std::string &t, size_t &pos, Block &b)
     if (std::fabs(tenths - code) > 0.001 || code > 999) throw InterpError("G-code out of range");
     int g = (int)code;
     int group = g_group(g);
-    if (group < 0) throw InterpError("Unknown g code used");
+    auto remap = g_remaps_.find(g);
+    if (remap != g_remaps_.end()) {
+        group = remap->second.group;
+        b.remap_g = g;
+    }
+    if (group < 0 || group >= GG_COUNT) throw InterpError("Unknown g code used");
     int &slot = b.g_modes[group];
     if (slot != -1 && group == GG_MOTION && (slot == 800 || g == 800)) {
         b.g80_dropped = true;
@@ -234,6 +239,14 @@ void Interp::parse_m(const std::string &t, size_t &pos, Block &b)
     pos++;
     int m = to_int(read_real_value(t, pos));
     if (m < 0) throw InterpError("Negative m code used");
+    auto remap = m_remaps_.find(m);
+    if (remap != m_remaps_.end()) {
+        if (b.m_count >= 4) throw InterpError("Too many m codes on line");
+        if (b.remap_m != -1) throw InterpError("Two m codes used from same modal group");
+        b.remap_m = m;
+        b.m_count++;
+        return;
+    }
     if (m > 199) throw InterpError("M-code greater than 199: M" + std::to_string(m));
     if (b.m_count >= 4) throw InterpError("Too many m codes on line");
     if (m == 98) {

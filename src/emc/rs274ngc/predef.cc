@@ -66,7 +66,6 @@ const Predef PREDEFS[] = {
     {"_selected_tool", [](const InterpState &s) { return (double)s.selected_tool; }},
     {"_selected_pocket", [](const InterpState &s) { return (double)s.selected_pocket; }},
     {"_call_level", [](const InterpState &s) { return (double)s.call_level; }},
-    {"_remap_level", [](const InterpState &) { return 0.0; }},
     {"_metric_machine", [](const InterpState &s) { return (double)s.settings.metric_machine; }},
 };
 
@@ -98,6 +97,7 @@ bool Interp::predefined(const std::string &name, double &v)
         return true;
     }
     if (name == "_task") { v = task_ ? 1 : 0; return true; }
+    if (name == "_remap_level") { v = remap_level_; return true; }
     if (name == "_value") { v = value_; return true; }
     if (name == "_value_returned") { v = value_returned_; return true; }
     if (name.compare(0, 5, "_ini[") == 0 && s_.settings.ini_vars && !ini_path_.empty()) {

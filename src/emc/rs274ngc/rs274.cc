@@ -1,4 +1,5 @@
 // rs274.cc: the standalone interpreter program: runs a G-code file and prints canon calls (canon.md §3).
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -127,14 +128,39 @@ int run_stdin(InterpBase &in, const Options &o)
     }
 }
 
-// the interactive menu shown without -g (1 starts)
-void menu()
+// read one answer line from stdin (without the newline); false at EOF
+bool ask(const char *prompt, std::string &answer)
 {
-    fprintf(stderr, "enter a number:\n1 = start interpreting\n2 = choose parameter file ...\n"
-                    "3 = choose tool table ...\n4 = turn block delete switch ON\n"
-                    "5 = adjust error handling...\nenter choice => ");
-    char buf[64];
-    while (fgets(buf, sizeof buf, stdin) && atoi(buf) != 1) fprintf(stderr, "enter choice => ");
+    fprintf(stderr, "%s", prompt);
+    char buf[1024];
+    if (!fgets(buf, sizeof buf, stdin)) return false;
+    buf[strcspn(buf, "\r\n")] = 0;
+    answer = buf;
+    return true;
+}
+
+// the interactive menu shown without -g; returns when 1 (start) is chosen or input ends
+void menu(Options &o, std::vector<CanonTool> &tools)
+{
+    std::string a;
+    for (;;) {
+        fprintf(stderr, "enter a number:\n1 = start interpreting\n2 = choose parameter file ...\n"
+                        "3 = choose tool table ...\n4 = turn block delete switch %s\n"
+                        "5 = adjust error handling...\n", o.block_delete ? "OFF" : "ON");
+        if (!ask("enter choice => ", a) || atoi(a.c_str()) == 1) return;
+        int choice = atoi(a.c_str());
+        std::string err;
+        if (choice == 2 && ask("name of parameter file => ", a)) o.var_file = a;
+        if (choice == 3 && ask("name of tool file => ", a)) {
+            tools.resize(1);
+            if (!load_tool_table(a, tools, err)) fprintf(stderr, "%s\n", err.c_str());
+            o.tool_given = true;
+        }
+        if (choice == 4) o.block_delete = !o.block_delete;
+        if (choice == 5 && ask("enter a number:\n0 = continue\n1 = enter MDI mode\n2 = stop\n"
+                               "enter choice => ", a))
+            o.on_error = std::max(0, std::min(2, atoi(a.c_str())));
+    }
 }
 
 // the built-in interpreter, or the one a plugin's make_interp() creates (nullptr on failure)
@@ -209,7 +235,7 @@ int main(int argc, char **argv)
     }
     setvbuf(stdout, nullptr, _IOFBF, 1 << 16);
     setvbuf(stderr, nullptr, _IONBF, 0);
-    if (!o.go) menu();
+    if (!o.go) menu(o, tools);
     fprintf(stderr, "executing\n");
     FILE *out = stdout;
     if (!o.output.empty() && !(out = fopen(o.output.c_str(), "w"))) {

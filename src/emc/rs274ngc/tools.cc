@@ -66,9 +66,19 @@ bool Interp::do_tool_change(Block &b)
     if (s_.settings.tool_change_quill_up) {
         out().comment("AXIS,hide");
         Pose p = s_.current;
-        p[AX_Z] = -s_.tool_offset[AX_Z];
+        p[AX_Z] = 0.0 - s_.tool_offset[AX_Z];
         out().straight_traverse(-1, canon_pose(p));
         s_.current = p;
+        out().comment("AXIS,show");
+    }
+    if (s_.settings.tool_change_at_g30) {
+        out().comment("AXIS,hide");
+        double k = s_.machine_to_program();
+        Pose m = program_to_machine_pose(s_.current);
+        for (int i = 0; i < AX_COUNT; i++)
+            m[i] = s_.params[PARAM_G30_HOME + i] * ((i >= AX_A && i <= AX_C) ? 1.0 : k);
+        s_.current = machine_to_program_pose(m);
+        out().straight_traverse(-1, canon_pose(s_.current));
         out().comment("AXIS,show");
     }
     out().change_tool();
@@ -82,6 +92,7 @@ bool Interp::do_tool_change(Block &b)
         if (s_.selected_tool != 0) tlo = Pose{o.x * k, o.y * k, o.z * k, o.a, o.b, o.c,
                                                o.u * k, o.v * k, o.w * k};
         apply_tlo(tlo);
+        if (s_.selected_tool != 0) out().use_tool_length_offset(canon_pose(tlo));
     }
     return true;
 }

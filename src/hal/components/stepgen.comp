@@ -2,209 +2,367 @@ component stepgen "Software step pulse generator (position or velocity mode)";
 pin in bit enable "Pulses are generated only while TRUE";
 pin in float position_cmd if !(personality & 0x100) "Commanded position, in position units";
 pin in float velocity_cmd if personality & 0x100 "Commanded velocity, in position units per second";
-pin out s32 counts "Steps output so far";
-pin out float position_fb "Position from the step accumulator, in position units";
+pin out s32 counts "Feedback position in whole steps";
+pin out float position_fb "Feedback position in position units, including the fraction of a step";
 pin out bit step if (personality & 0xff) == 0 "Step output (type 0)";
-pin out bit dir if (personality & 0xff) == 0 "Direction output (type 0), TRUE for negative motion";
+pin out bit dir if (personality & 0xff) == 0 "Direction output (type 0), TRUE while moving negative";
 pin out bit up if (personality & 0xff) == 1 "Count-up output (type 1)";
 pin out bit down if (personality & 0xff) == 1 "Count-down output (type 1)";
-pin out bit phase_A if (personality & 0xff) == 2 "Quadrature phase A (type 2)";
-pin out bit phase_B if (personality & 0xff) == 2 "Quadrature phase B (type 2)";
+pin out bit phase_A if (personality & 0xff) >= 2 "Phase output A (types 2 and up)";
+pin out bit phase_B if (personality & 0xff) >= 2 "Phase output B (types 2 and up)";
+pin out bit phase_C if ((personality >> 12) & 7) >= 3 "Phase output C (3, 4 and 5 phase types)";
+pin out bit phase_D if ((personality >> 12) & 7) >= 4 "Phase output D (4 and 5 phase types)";
+pin out bit phase_E if ((personality >> 12) & 7) >= 5 "Phase output E (5 phase types)";
 param rw float position_scale = 1.0 "Steps per position unit";
 param rw float maxvel = 0.0 "Velocity limit in position units per second (0 = only the pulse timing limit)";
 param rw float maxaccel = 0.0 "Acceleration limit in position units per second squared (0 = none)";
 param r float frequency "Current step rate in steps per second";
-param r s32 rawcounts "Steps output so far";
-param rw u32 steplen = 1 "Step pulse length in ns, rounded up to whole make-pulses periods";
+param r s32 rawcounts "Steps output so far (updated by make-pulses)";
+param rw u32 steplen = 1 "Step pulse length (types 0, 1) or minimum time in one phase state, in ns";
 param rw u32 stepspace = 1 if (personality & 0xff) <= 1 "Minimum space between step pulses in ns";
 param rw u32 dirsetup = 1 if (personality & 0xff) == 0 "Time from a direction change to the next step, in ns";
-param rw u32 dirhold = 1 if (personality & 0xff) == 0 "Time from a step to a direction change, in ns";
+param rw u32 dirhold = 1 if (personality & 0xff) == 0 "Time from the end of a step pulse to a direction change, in ns";
 param rw u32 dirdelay = 1 if (personality & 0xff) >= 1 "Time from a step to a step in the other direction, in ns";
-variable long long accum;
+variable long long accum = 2147483648;
 variable long long addval;
+variable long long target_addval;
+variable long long addval_step;
 variable double freq;
-variable int len_left;
-variable int space_left;
-variable int setup_left;
-variable int hold_left;
-variable int out_dir = 1;
-variable int pulse_on;
-variable unsigned phase;
+variable double old_pos_cmd;
+variable long pulse_left;
+variable long space_left;
+variable long hold_left;
+variable long setup_left;
+variable int cur_dir = 1;
+variable int state;
+variable int warned;
 option rtapi_app no;
 include <rtapi_math.h>;
 license "GPL";
 author "OpenEMC";
-description """Load with step_type=T0,T1,... (one entry per channel, at most 16; type 0 step/dir,
-1 up/down, 2 quadrature) and ctrl_type=p|v,... (default p).""";
+description """Load with step_type=T0,T1,... (one entry per channel, at most 16) and
+ctrl_type=p|v,... (default p). Step types: 0 step/dir, 1 up/down, 2 quadrature,
+3 three-wire, 4 three-wire half step, 5 and 6 unipolar full step, 7 and 8 bipolar
+full step, 9 unipolar half step, 10 bipolar half step, 11 five-wire unipolar,
+12 five-wire wave, 13 five-wire unipolar half step, 14 five-wire wave half step,
+15 user defined by user_step_type=P0,P1,... (2 to 10 bit patterns, bit 0 = phase A).
+The position is a fixed-point phase accumulator with 32 fraction bits advanced by
+make-pulses; update-freq turns the command into the per-period increment under
+maxvel and maxaccel.""";
 ;;
 #define STEPGEN_MAX_CHAN 16
-#define STEPGEN_ONE (4294967296.0)
+#define STEPGEN_MAX_CYCLE 10
+#define STEPGEN_ONE 4294967296.0
+#define STEPGEN_HALF (1LL << 31)
 
 static int step_type[STEPGEN_MAX_CHAN] = { [0 ... STEPGEN_MAX_CHAN - 1] = -1 };
 RTAPI_MP_ARRAY_INT(step_type, STEPGEN_MAX_CHAN, "stepping types for up to 16 channels");
 static char *ctrl_type[STEPGEN_MAX_CHAN];
 RTAPI_MP_ARRAY_STRING(ctrl_type, STEPGEN_MAX_CHAN, "control type (p or v) of each channel");
-static long base_period_ns;
+static int user_step_type[STEPGEN_MAX_CYCLE] = { [0 ... STEPGEN_MAX_CYCLE - 1] = -1 };
+RTAPI_MP_ARRAY_INT(user_step_type, STEPGEN_MAX_CYCLE, "phase patterns of step type 15");
 
-/* Round a timing parameter up to whole base periods, store it back, return the count. */
-static int stepgen_periods(hal_u32_t *ns)
+/* Phase patterns (bit 0 = phase A) of step types 2..14, one state per entry. */
+static const unsigned char stepgen_cycle[13][STEPGEN_MAX_CYCLE] = {
+    {1, 3, 2, 0},
+    {1, 2, 4},
+    {1, 3, 2, 6, 4, 5},
+    {1, 2, 4, 8},
+    {3, 6, 12, 9},
+    {1, 7, 14, 8},
+    {5, 6, 10, 9},
+    {1, 3, 2, 6, 4, 12, 8, 9},
+    {1, 5, 7, 6, 14, 10, 8, 9},
+    {1, 2, 4, 8, 16},
+    {3, 6, 12, 24, 17},
+    {1, 3, 2, 6, 4, 12, 8, 24, 16, 17},
+    {3, 7, 6, 14, 12, 28, 24, 25, 17, 19},
+};
+/* Number of states per cycle and number of phase outputs of step types 2..14. */
+static const unsigned char stepgen_cycle_len[13] = {4, 3, 6, 4, 4, 4, 4, 8, 8, 5, 5, 10, 10};
+static const unsigned char stepgen_phases[13] = {2, 3, 3, 4, 4, 4, 4, 4, 4, 5, 5, 5, 5};
+static unsigned char user_cycle[STEPGEN_MAX_CYCLE];
+static int user_cycle_len, user_phases;
+
+/* Timing shared by all channels. Until make-pulses has run once its period is
+   assumed to be 50 us and the servo period 1 ms, so the first update-freq call
+   works with those scale factors, as the reference implementation does. */
+static long base_ns = 50000, base_ns_used = 50000, servo_ns_used = 1000000;
+static double base_s = 50000e-9, servo_s = 1e-3, servo_rate = 1e3;
+static double per_hz = STEPGEN_ONE * 50000e-9, per_hz_s = STEPGEN_ONE * 50000e-9 * 50000e-9;
+
+/* Round a timing parameter up to whole make-pulses periods (at least `min_ns`) and store it back. */
+static long stepgen_round(hal_u32_t *ns, hal_u32_t min_ns)
 {
-    long n;
-    if (base_period_ns <= 0) return 1;
-    n = (*ns + base_period_ns - 1) / base_period_ns;
-    if (n < 1) n = 1;
-    *ns = n * base_period_ns;
-    return (int)n;
+    long n = *ns < min_ns ? min_ns : *ns;
+    n = (n + base_ns - 1) / base_ns * base_ns;
+    *ns = (hal_u32_t)n;
+    return n;
 }
 
-/* Highest step rate the pulse timing allows, in steps per second. */
-static double stepgen_max_freq(struct __comp_state *__comp_inst)
+/* Pattern of state `s` for the channel's step type (2..15). */
+static unsigned stepgen_pattern(int type, int s)
 {
-    int type = personality & 0xff, n;
-    if (base_period_ns <= 0) return 0;
-    if (type == 2) n = stepgen_periods(&steplen);
-    else n = stepgen_periods(&steplen) + stepgen_periods(&stepspace);
-    return 1e9 / ((double)n * base_period_ns);
+    return type == 15 ? user_cycle[s] : stepgen_cycle[type - 2][s];
 }
 
-/* New velocity (steps/s) that heads for target under the accel limit and can stop there. */
-static double stepgen_seek(double p, double v, double target, double amax, double dt)
+/* Number of states in one cycle of step type 2..15. */
+static int stepgen_cycle_length(int type)
 {
-    double d = target - p, s = d >= 0 ? 1.0 : -1.0, rem, lim, lo, hi, nv;
-    if (amax <= 0) return 2.0 * d / dt - v;
-    rem = fabs(d) - s * v * dt / 2.0;
-    if (rem < 0) rem = 0;
-    lim = amax * (-dt / 2.0 + sqrt(dt * dt / 4.0 + 2.0 * rem / amax));
-    nv = s * lim;
-    lo = v - amax * dt;
-    hi = v + amax * dt;
-    if (nv < lo) nv = lo;
-    if (nv > hi) nv = hi;
-    return nv;
+    return type == 15 ? user_cycle_len : stepgen_cycle_len[type - 2];
+}
+
+/* Recompute the scale factors when the make-pulses or servo period changed. */
+static void stepgen_update_scales(long servo_period)
+{
+    if (base_ns != base_ns_used) {
+        base_ns_used = base_ns;
+        base_s = base_ns * 0.000000001;
+        per_hz = STEPGEN_ONE * base_s;
+        per_hz_s = per_hz * base_s;
+    }
+    if (servo_period != servo_ns_used) {
+        servo_ns_used = servo_period;
+        servo_s = servo_period * 0.000000001;
+        servo_rate = 1.0 / servo_s;
+    }
+}
+
+/* Highest step rate (steps/s) the pulse timing allows; rounds the timing params. */
+static double stepgen_timing_limit(struct __comp_state *__comp_inst)
+{
+    int type = personality & 0xff;
+    long min_period = stepgen_round(&steplen, 1);
+    if (type <= 1) min_period += stepgen_round(&stepspace, 0);
+    if (type == 0) {
+        stepgen_round(&dirsetup, 0);
+        stepgen_round(&dirhold, 0);
+    } else {
+        stepgen_round(&dirdelay, 0);
+    }
+    return 1.0 / (min_period * 0.000000001);
+}
+
+/* Apply maxvel to the timing limit (correcting a too high maxvel); returns steps/s. */
+static double stepgen_vel_limit(struct __comp_state *__comp_inst, int chan, double fmax, double scale)
+{
+    double want;
+    if (maxvel <= 0.0) {
+        maxvel = 0.0;
+        return fmax;
+    }
+    want = maxvel * fabs(scale);
+    if (want <= fmax) return want;
+    if (!warned) {
+        rtapi_print_msg(RTAPI_MSG_ERR, "STEPGEN: Channel %d: The requested maximum velocity of "
+                        "%d steps/sec is too high.\n", chan, (int)want);
+        rtapi_print_msg(RTAPI_MSG_ERR, "STEPGEN: The maximum number of steps possible is %d "
+                        "steps per second\n", (int)fmax);
+        warned = 1;
+    }
+    maxvel = fmax / fabs(scale);
+    return fmax;
+}
+
+/* Apply maxaccel: the hard limit is full speed within one servo period; returns steps/s^2. */
+static double stepgen_acc_limit(struct __comp_state *__comp_inst, double fmax, double scale)
+{
+    double amax = fmax * servo_rate;
+    if (maxaccel <= 0.0) {
+        maxaccel = 0.0;
+        return amax;
+    }
+    if (maxaccel * fabs(scale) > amax) {
+        maxaccel = amax / fabs(scale);
+        return amax;
+    }
+    return maxaccel * fabs(scale);
+}
+
+/* Clamp v to [lo, hi]. */
+static double stepgen_clamp(double v, double lo, double hi)
+{
+    if (v > hi) return hi;
+    if (v < lo) return lo;
+    return v;
+}
+
+/* Position mode: velocity for the next servo period that steers toward the command.
+   It estimates where the output ends up once it has matched the command velocity at
+   full acceleration, compares that with where the command will be (allowing for the
+   1.5 period lag of the pulse chain) and ramps the way that shrinks the error. */
+static double stepgen_plan(double cmd, double cmd_vel, double pos, double vel, double amax)
+{
+    double ac = cmd_vel > vel ? amax : -amax;
+    double t_match = (cmd_vel - vel) / ac;
+    double out_end = pos + (cmd_vel + vel) * 0.5 * t_match;
+    double cmd_end = cmd + cmd_vel * (t_match - 1.5 * servo_s);
+    double err = out_end - cmd_end;
+    if (t_match < servo_s) {
+        if (fabs(err) < 0.0001) return cmd_vel;
+        return stepgen_clamp(cmd_vel - 0.5 * err * servo_rate, vel - amax * servo_s,
+                             vel + amax * servo_s);
+    }
+    if (fabs(err + -2.0 * ac * servo_s * t_match * 2.0) < fabs(err)) ac = -ac;
+    return vel + ac * servo_s;
 }
 
 /* Servo-rate part of one channel: choose the step rate for the next period. */
-static void stepgen_freq_one(struct __comp_state *__comp_inst, long period)
+static void stepgen_freq_one(struct __comp_state *__comp_inst, int chan)
 {
-    double dt = period * 1e-9, scale = position_scale, p, nv, fmax, vmax, amax;
-    if (base_period_ns <= 0) base_period_ns = period;
-    if (scale > -1e-20 && scale < 1e-20) scale = 1.0;
-    fmax = stepgen_max_freq(__comp_inst);
-    vmax = fabs(maxvel * scale);
-    if (vmax <= 0 || vmax > fmax) vmax = fmax;
-    amax = fabs(maxaccel * scale);
+    double scale, fmax, amax, nv;
+    if (position_scale < 1e-20 && position_scale > -1e-20) position_scale = 1.0;
+    scale = position_scale;
+    fmax = stepgen_timing_limit(__comp_inst);
     if (!enable) {
+        if (!(personality & 0x100)) old_pos_cmd = position_cmd * scale;
         freq = 0;
         addval = 0;
+        target_addval = 0;
         frequency = 0;
         return;
     }
-    p = accum / STEPGEN_ONE;
+    fmax = stepgen_vel_limit(__comp_inst, chan, fmax, scale);
+    amax = stepgen_acc_limit(__comp_inst, fmax, scale);
     if (personality & 0x100) {
-        double want = velocity_cmd * scale, dv = amax * dt;
-        nv = want;
-        if (amax > 0 && nv > freq + dv) nv = freq + dv;
-        if (amax > 0 && nv < freq - dv) nv = freq - dv;
+        double dv = amax * servo_s;
+        nv = stepgen_clamp(velocity_cmd * scale, -fmax, fmax);
+        nv = stepgen_clamp(nv, freq - dv, freq + dv);
     } else {
-        nv = stepgen_seek(p, freq, position_cmd * scale, amax, dt);
+        double cmd = position_cmd * scale;
+        double cmd_vel = (cmd - old_pos_cmd) * servo_rate;
+        double pos = (accum - STEPGEN_HALF) * (1.0 / STEPGEN_ONE);
+        old_pos_cmd = cmd;
+        nv = stepgen_clamp(stepgen_plan(cmd, cmd_vel, pos, freq, amax), -fmax, fmax);
     }
-    if (nv > vmax) nv = vmax;
-    if (nv < -vmax) nv = -vmax;
-    addval = (long long)((freq + nv) / 2.0 * (base_period_ns * 1e-9) * STEPGEN_ONE);
     freq = nv;
     frequency = nv;
+    target_addval = (long long)(nv * per_hz);
+    addval_step = (long long)(amax * per_hz_s);
 }
 
-/* Quadrature outputs for the current phase (type 2). */
+/* Drive the phase outputs from the current state (types 2..15). */
 static void stepgen_phase_out(struct __comp_state *__comp_inst)
 {
-    unsigned ph = phase & 3;
-    phase_A = ph == 1 || ph == 2;
-    phase_B = ph >= 2;
+    unsigned bits = stepgen_pattern(personality & 0xff, state);
+    phase_A = bits & 1;
+    phase_B = (bits >> 1) & 1;
+    if (phase_C_ptr) phase_C = (bits >> 2) & 1;
+    if (phase_D_ptr) phase_D = (bits >> 3) & 1;
+    if (phase_E_ptr) phase_E = (bits >> 4) & 1;
 }
 
-/* Start one step toward `want` (+1/-1) if the timing allows. */
-static void stepgen_try_step(struct __comp_state *__comp_inst, int want)
+/* Count the timing constraints down by one make-pulses period; end finished pulses. */
+static void stepgen_timers(struct __comp_state *__comp_inst)
 {
-    int type = personality & 0xff;
-    if (pulse_on || space_left > 0) return;
-    if (want != out_dir && type != 2) {
-        if (hold_left > 0) return;
-        out_dir = want;
-        if (type == 0) dir = want < 0;
-        setup_left = stepgen_periods(type == 0 ? &dirsetup : &dirdelay);
-        return;
-    }
-    if (setup_left > 0) return;
-    out_dir = want;
-    rawcounts = rawcounts + want;
-    len_left = stepgen_periods(&steplen);
-    if (type == 2) {
-        phase += want;
-        stepgen_phase_out(__comp_inst);
-        space_left = len_left;
-        return;
-    }
-    pulse_on = 1;
-    if (type == 0) step = 1;
-    else if (want > 0) up = 1;
-    else down = 1;
-}
-
-/* End a running step pulse when its length is over. */
-static void stepgen_pulse_timers(struct __comp_state *__comp_inst)
-{
-    int type = personality & 0xff;
-    if (space_left > 0) space_left--;
-    if (setup_left > 0) setup_left--;
-    if (hold_left > 0) hold_left--;
-    if (!pulse_on) return;
-    if (--len_left > 0) return;
-    pulse_on = 0;
-    if (type == 0) step = 0;
-    else {
+    pulse_left = pulse_left > base_ns ? pulse_left - base_ns : 0;
+    space_left = space_left > base_ns ? space_left - base_ns : 0;
+    hold_left = hold_left > base_ns ? hold_left - base_ns : 0;
+    setup_left = setup_left > base_ns ? setup_left - base_ns : 0;
+    if (pulse_left) return;
+    if (step_ptr) step = 0;
+    if (up_ptr) {
         up = 0;
         down = 0;
     }
-    space_left = stepgen_periods(&stepspace);
-    hold_left = type == 0 ? stepgen_periods(&dirhold) : 0;
+}
+
+/* Move addval toward the target by at most one acceleration step. */
+static void stepgen_ramp(struct __comp_state *__comp_inst)
+{
+    if (addval_step == 0 || (target_addval <= addval + addval_step &&
+                             target_addval >= addval - addval_step))
+        addval = target_addval;
+    else if (target_addval > addval)
+        addval += addval_step;
+    else
+        addval -= addval_step;
+}
+
+/* Follow the sign of addval with the direction; returns 0 while the DDS must wait. */
+static int stepgen_direction(struct __comp_state *__comp_inst)
+{
+    int want = addval > 0 ? 1 : addval < 0 ? -1 : cur_dir;
+    if (want != cur_dir) {
+        if (hold_left > 0) return 0;
+        cur_dir = want;
+        if (dir_ptr) {
+            dir = want < 0;
+            setup_left = dirsetup;
+        }
+    }
+    return setup_left == 0;
+}
+
+/* Emit one step in direction cur_dir and start the timing constraints. */
+static void stepgen_emit(struct __comp_state *__comp_inst)
+{
+    int type = personality & 0xff;
+    pulse_left = steplen;
+    if (type == 0) {
+        step = 1;
+        space_left = (long)steplen + stepspace;
+        hold_left = (long)steplen + dirhold;
+        return;
+    }
+    hold_left = dirdelay;
+    if (type == 1) {
+        space_left = (long)steplen + stepspace;
+        if (cur_dir > 0) up = 1;
+        else down = 1;
+        return;
+    }
+    space_left = steplen;
+    state += cur_dir;
+    if (state < 0) state = stepgen_cycle_length(type) - 1;
+    if (state >= stepgen_cycle_length(type)) state = 0;
 }
 
 /* Base-rate part of one channel: advance the accumulator and emit steps. */
-static void stepgen_pulses_one(struct __comp_state *__comp_inst, long period)
+static void stepgen_pulses_one(struct __comp_state *__comp_inst)
 {
-    long long target;
-    base_period_ns = period;
-    if ((personality & 0xff) != 2) stepgen_pulse_timers(__comp_inst);
-    else if (space_left > 0) space_left--;
-    if (!enable) return;
-    accum += addval;
-    target = (accum + (1LL << 31)) >> 32;
-    if (target > rawcounts) stepgen_try_step(__comp_inst, 1);
-    else if (target < rawcounts) stepgen_try_step(__comp_inst, -1);
+    long long next;
+    stepgen_timers(__comp_inst);
+    if (enable) {
+        stepgen_ramp(__comp_inst);
+        next = accum + addval;
+        if (stepgen_direction(__comp_inst)) {
+            if ((next >> 32) == (accum >> 32)) accum = next;
+            else if (space_left == 0) {
+                accum = next;
+                stepgen_emit(__comp_inst);
+            }
+        }
+        rawcounts = (hal_s32_t)(accum >> 32);
+    }
+    if ((personality & 0xff) >= 2) stepgen_phase_out(__comp_inst);
 }
 
 /* Publish counts and position of one channel. */
 static void stepgen_capture_one(struct __comp_state *__comp_inst)
 {
+    long long a = accum;
     double scale = position_scale;
-    if (scale > -1e-20 && scale < 1e-20) scale = 1.0;
-    counts = rawcounts;
-    position_fb = accum / STEPGEN_ONE / scale;
+    if (scale < 1e-20 && scale > -1e-20) scale = 1.0;
+    counts = (hal_s32_t)(a >> 32);
+    position_fb = (a - STEPGEN_HALF) * (1.0 / STEPGEN_ONE) / scale;
 }
 
 /* Funct stepgen.update-freq: all channels. */
 static void stepgen_update_freq(void *arg, long period)
 {
+    int chan = 0;
     (void)arg;
-    FOR_ALL_INSTS() stepgen_freq_one(__comp_inst, period);
+    stepgen_update_scales(period);
+    FOR_ALL_INSTS() stepgen_freq_one(__comp_inst, chan++);
 }
 
 /* Funct stepgen.make-pulses: all channels. */
 static void stepgen_make_pulses(void *arg, long period)
 {
     (void)arg;
-    FOR_ALL_INSTS() stepgen_pulses_one(__comp_inst, period);
+    base_ns = period;
+    FOR_ALL_INSTS() stepgen_pulses_one(__comp_inst);
 }
 
 /* Funct stepgen.capture-position: all channels. */
@@ -215,15 +373,40 @@ static void stepgen_capture_position(void *arg, long period)
     FOR_ALL_INSTS() stepgen_capture_one(__comp_inst);
 }
 
+/* Check user_step_type and build the type 15 cycle; returns 0 or -EINVAL. */
+static int stepgen_user_cycle(void)
+{
+    int i, bits = 0;
+    for (i = 0; i < STEPGEN_MAX_CYCLE && user_step_type[i] != -1; i++) {
+        if (user_step_type[i] < 0 || user_step_type[i] > 31) {
+            rtapi_print_msg(RTAPI_MSG_ERR, "STEPGEN: ERROR: user_step_type entry %d (%d) must be "
+                            "a pattern of at most 5 phases (0..31)\n", i, user_step_type[i]);
+            return -EINVAL;
+        }
+        user_cycle[i] = user_step_type[i];
+        bits |= user_step_type[i];
+    }
+    user_cycle_len = i;
+    if (i < 2) {
+        rtapi_print_msg(RTAPI_MSG_ERR, "STEPGEN: ERROR: step type 15 needs user_step_type= with "
+                        "2 to %d patterns\n", STEPGEN_MAX_CYCLE);
+        return -EINVAL;
+    }
+    for (user_phases = 2; user_phases < 5 && (bits >> user_phases); user_phases++)
+        ;
+    return 0;
+}
+
 /* Personality of channel i from step_type and ctrl_type, or -1 after an error. */
 static int stepgen_personality(int i)
 {
-    int v = 0;
-    if (step_type[i] < 0 || step_type[i] > 2) {
-        rtapi_print_msg(RTAPI_MSG_ERR, "STEPGEN: ERROR: bad stepping type '%d', axis %d\n",
-                        step_type[i], i);
+    int v = 0, t = step_type[i], phases = 0;
+    if (t < 0 || t > 15) {
+        rtapi_print_msg(RTAPI_MSG_ERR, "STEPGEN: ERROR: bad stepping type '%d', axis %d\n", t, i);
         return -1;
     }
+    if (t == 15 && !user_cycle_len && stepgen_user_cycle() < 0) return -1;
+    if (t >= 2) phases = t == 15 ? user_phases : stepgen_phases[t - 2];
     if (ctrl_type[i] && ctrl_type[i][0]) {
         if ((ctrl_type[i][0] == 'v' || ctrl_type[i][0] == 'V') && !ctrl_type[i][1]) v = 0x100;
         else if ((ctrl_type[i][0] != 'p' && ctrl_type[i][0] != 'P') || ctrl_type[i][1]) {
@@ -232,7 +415,7 @@ static int stepgen_personality(int i)
             return -1;
         }
     }
-    return step_type[i] | v;
+    return t | v | phases << 12;
 }
 
 /* Export the three functs shared by all channels. */

@@ -57,9 +57,11 @@ typedef struct {
     hc_handler_t fn;
     int min_args, max_args;  /* max -1 = unlimited */
     int flags;
+    const char *synopsis;    /* usage line shown by help */
+    const char *text;        /* one-paragraph description shown by help NAME */
 } hc_command_t;
-#define HC_ARROWS 1
-#define HC_TILDE 2
+#define HC_ARROWS 1   /* flag: drop arrow words (=>, <=, <=>) before counting arguments */
+#define HC_TILDE 2    /* flag: expand a leading ~ in the arguments */
 const hc_command_t *hc_find_command(const char *name);
 const hc_command_t *hc_command_at(int i);
 

@@ -6,28 +6,32 @@
 #include "halcmd.h"
 #include "halcmd_cmds.h"
 
+/* Signature shared by hal_add_funct_to_thread and hal_init_funct_to_thread. */
+typedef int (*hc_funct_adder_t)(const char *funct, const char *thread, int position);
+
+/* Put funct argv[0] into thread argv[1] at position argv[2] (default last). */
+static int hc_add_funct(int argc, char *argv[], hc_funct_adder_t add, const char *cmd,
+                        const char *where)
+{
+    int pos = argc > 2 ? atoi(argv[2]) : -1;
+    if (add(argv[0], argv[1], pos) < 0) {
+        hc_error("%s failed", cmd);
+        return -1;
+    }
+    hc_info("Function '%s' added to %sthread '%s'", argv[0], where, argv[1]);
+    return 0;
+}
+
 /* addf funct thread [pos] */
 int hc_cmd_addf(int argc, char *argv[])
 {
-    int pos = argc > 2 ? atoi(argv[2]) : -1;
-    if (hal_add_funct_to_thread(argv[0], argv[1], pos) < 0) {
-        hc_error("addf failed");
-        return -1;
-    }
-    hc_info("Function '%s' added to thread '%s'", argv[0], argv[1]);
-    return 0;
+    return hc_add_funct(argc, argv, hal_add_funct_to_thread, "addf", "");
 }
 
 /* initf funct thread [pos] */
 int hc_cmd_initf(int argc, char *argv[])
 {
-    int pos = argc > 2 ? atoi(argv[2]) : -1;
-    if (hal_init_funct_to_thread(argv[0], argv[1], pos) < 0) {
-        hc_error("initf failed");
-        return -1;
-    }
-    hc_info("Function '%s' added to init of thread '%s'", argv[0], argv[1]);
-    return 0;
+    return hc_add_funct(argc, argv, hal_init_funct_to_thread, "initf", "init of ");
 }
 
 /* delf funct [thread] */
@@ -41,15 +45,21 @@ int hc_cmd_delf(int argc, char *argv[])
     return 0;
 }
 
-/* start: run all threads (library reports a lock). */
+/* Start or stop all threads; the library reports a lock itself. */
+static int hc_run_threads(int (*action)(void), const char *done)
+{
+    if (action() < 0)
+        return -1;
+    hc_info("Realtime threads %s", done);
+    return 0;
+}
+
+/* start: run all threads. */
 int hc_cmd_start(int argc, char *argv[])
 {
     (void)argc;
     (void)argv;
-    if (hal_start_threads() < 0)
-        return -1;
-    hc_info("Realtime threads started");
-    return 0;
+    return hc_run_threads(hal_start_threads, "started");
 }
 
 /* stop: stop all threads. */
@@ -57,10 +67,7 @@ int hc_cmd_stop(int argc, char *argv[])
 {
     (void)argc;
     (void)argv;
-    if (hal_stop_threads() < 0)
-        return -1;
-    hc_info("Realtime threads stopped");
-    return 0;
+    return hc_run_threads(hal_stop_threads, "stopped");
 }
 
 /* lock [all|tune|none]: set lock bits; unknown words do nothing. */

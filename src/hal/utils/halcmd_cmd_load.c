@@ -116,6 +116,16 @@ static int hc_unloadrt_all(void)
     return rc;
 }
 
+/* Look up a loaded component; logs and returns -1 when there is none of that name. */
+static int hc_loaded_comp(const char *name, hal_comp_info_t *info)
+{
+    if (hal_comp_by_name(name, info) < 0) {
+        hc_error("component '%s' is not loaded", name);
+        return -1;
+    }
+    return 0;
+}
+
 /* unloadrt name|all */
 int hc_cmd_unloadrt(int argc, char *argv[])
 {
@@ -123,10 +133,8 @@ int hc_cmd_unloadrt(int argc, char *argv[])
     (void)argc;
     if (strcmp(argv[0], "all") == 0)
         return hc_unloadrt_all();
-    if (hal_comp_by_name(argv[0], &info) < 0) {
-        hc_error("component '%s' is not loaded", argv[0]);
+    if (hc_loaded_comp(argv[0], &info) < 0)
         return -1;
-    }
     if (info.type != HC_COMP_TYPE_RT) {
         hc_error("component '%s' is not a realtime module", argv[0]);
         return -1;
@@ -142,10 +150,8 @@ int hc_cmd_unload(int argc, char *argv[])
         hc_cmd_unloadusr(argc, argv);
         return hc_unloadrt_all();
     }
-    if (hal_comp_by_name(argv[0], &info) < 0) {
-        hc_error("component '%s' is not loaded", argv[0]);
+    if (hc_loaded_comp(argv[0], &info) < 0)
         return -1;
-    }
     if (info.type == HC_COMP_TYPE_RT)
         return hc_unloadrt_one(argv[0]);
     return hc_cmd_unloadusr(argc, argv);

@@ -8,14 +8,20 @@
 #include "halcmd_cmds.h"
 #include "halcmd_hal.h"
 
+/* Switch echoing of input lines on or off and say so. */
+static int hc_set_echo(int on)
+{
+    printf("Echo %s\n", on ? "on" : "off");
+    hc.echo = on;
+    return 0;
+}
+
 /* echo: turn on echoing of input lines. */
 int hc_cmd_echo(int argc, char *argv[])
 {
     (void)argc;
     (void)argv;
-    printf("Echo on\n");
-    hc.echo = 1;
-    return 0;
+    return hc_set_echo(1);
 }
 
 /* unecho: turn echoing off. */
@@ -23,9 +29,7 @@ int hc_cmd_unecho(int argc, char *argv[])
 {
     (void)argc;
     (void)argv;
-    printf("Echo off\n");
-    hc.echo = 0;
-    return 0;
+    return hc_set_echo(0);
 }
 
 /* print [msg]: message on stderr with the file:line: prefix. */

@@ -27,6 +27,40 @@ static void hc_to_data(int type, const hc_value_t *v, hal_data_u *d)
     }
 }
 
+/* Look up a pin or param; logs and returns -1 when there is none of that name. */
+static int hc_find_p(const char *name, hal_type_t *type, int *dir, hal_data_u *value)
+{
+    int rc = hal_get_p(name, type, dir, value);
+    if (rc < 0) {
+        hc_error("parameter or pin '%s': %s", name, hal_strerror(rc));
+        return -1;
+    }
+    return 0;
+}
+
+/* Look up a signal; logs and returns -1 when there is none of that name. */
+static int hc_find_s(const char *name, hal_type_t *type, hal_data_u *value)
+{
+    int writers;
+    int rc = hal_get_s(name, type, value, &writers);
+    if (rc < 0) {
+        hc_error("signal '%s': %s", name, hal_strerror(rc));
+        return -1;
+    }
+    return 0;
+}
+
+/* Print a value as getp/gets do; a port prints port_size instead. */
+static void hc_print_value(hal_type_t type, const hal_data_u *value, unsigned port_size)
+{
+    char buf[64];
+    if (type == HAL_PORT)
+        snprintf(buf, sizeof buf, "%u", port_size);
+    else
+        hc_format_value_plain(type, (const void *)value, buf, sizeof buf);
+    printf("%s\n", buf);
+}
+
 /* setp name value: write an unlinked IN/IO pin or a RW param. */
 int hc_cmd_setp(int argc, char *argv[])
 {
@@ -35,11 +69,8 @@ int hc_cmd_setp(int argc, char *argv[])
     hc_value_t v;
     int dir, rc;
     (void)argc;
-    rc = hal_get_p(argv[0], &type, &dir, &cur);
-    if (rc < 0) {
-        hc_error("parameter or pin '%s': %s", argv[0], hal_strerror(rc));
+    if (hc_find_p(argv[0], &type, &dir, &cur) < 0)
         return -1;
-    }
     rc = hc_parse_value(type, argv[1], &v);
     if (rc == 0) {
         hc_to_data(type, &v, &data);
@@ -60,11 +91,11 @@ int hc_cmd_sets(int argc, char *argv[])
     hal_type_t type;
     hal_data_u cur, data;
     hc_value_t v;
-    int writers, rc;
+    int rc;
     (void)argc;
-    rc = hal_get_s(argv[0], &type, &cur, &writers);
-    if (rc == 0)
-        rc = hc_parse_value(type == HAL_PORT ? HAL_U32 : type, argv[1], &v);
+    if (hc_find_s(argv[0], &type, &cur) < 0)
+        return -1;
+    rc = hc_parse_value(type == HAL_PORT ? HAL_U32 : type, argv[1], &v);
     if (rc == 0) {
         hc_to_data(type == HAL_PORT ? HAL_U32 : type, &v, &data);
         rc = hal_set_s(argv[0], type, &data);
@@ -77,76 +108,51 @@ int hc_cmd_sets(int argc, char *argv[])
     return 0;
 }
 
-/* getp name: print the value of a pin or param. */
-int hc_cmd_getp(int argc, char *argv[])
+/* What getp/gets/ptype/stype look up, and what they print of it. */
+enum { HC_PIN_OR_PARAM, HC_SIGNAL };
+enum { HC_PRINT_VALUE, HC_PRINT_TYPE };
+
+/* Print the value or type of a pin/param or signal; a port shows 0 as a pin, size as a signal. */
+static int hc_print_item(const char *name, int item, int what)
 {
     hal_type_t type;
     hal_data_u value;
-    char buf[64];
-    int dir, rc;
-    (void)argc;
-    rc = hal_get_p(argv[0], &type, &dir, &value);
-    if (rc < 0) {
-        hc_error("parameter or pin '%s': %s", argv[0], hal_strerror(rc));
+    int dir;
+    int rc = item == HC_SIGNAL ? hc_find_s(name, &type, &value)
+                               : hc_find_p(name, &type, &dir, &value);
+    if (rc < 0)
         return -1;
-    }
-    if (type == HAL_PORT)
-        snprintf(buf, sizeof buf, "0");
+    if (what == HC_PRINT_TYPE)
+        printf("%s\n", hc_type_name(type));
     else
-        hc_format_value_plain(type, (const void *)&value, buf, sizeof buf);
-    printf("%s\n", buf);
+        hc_print_value(type, &value, item == HC_SIGNAL ? (unsigned)value.u : 0);
     return 0;
 }
 
-/* gets sig: print the value of a signal (port: buffer size). */
+/* getp name: print the value of a pin or param. */
+int hc_cmd_getp(int argc, char *argv[])
+{
+    (void)argc;
+    return hc_print_item(argv[0], HC_PIN_OR_PARAM, HC_PRINT_VALUE);
+}
+
+/* gets sig: print the value of a signal. */
 int hc_cmd_gets(int argc, char *argv[])
 {
-    hal_type_t type;
-    hal_data_u value;
-    char buf[64];
-    int writers, rc;
     (void)argc;
-    rc = hal_get_s(argv[0], &type, &value, &writers);
-    if (rc < 0) {
-        hc_error("signal '%s': %s", argv[0], hal_strerror(rc));
-        return -1;
-    }
-    if (type == HAL_PORT)
-        snprintf(buf, sizeof buf, "%u", (unsigned)value.u);
-    else
-        hc_format_value_plain(type, (const void *)&value, buf, sizeof buf);
-    printf("%s\n", buf);
-    return 0;
+    return hc_print_item(argv[0], HC_SIGNAL, HC_PRINT_VALUE);
 }
 
 /* ptype name: print the type of a pin or param. */
 int hc_cmd_ptype(int argc, char *argv[])
 {
-    hal_type_t type;
-    hal_data_u value;
-    int dir, rc;
     (void)argc;
-    rc = hal_get_p(argv[0], &type, &dir, &value);
-    if (rc < 0) {
-        hc_error("parameter or pin '%s': %s", argv[0], hal_strerror(rc));
-        return -1;
-    }
-    printf("%s\n", hc_type_name(type));
-    return 0;
+    return hc_print_item(argv[0], HC_PIN_OR_PARAM, HC_PRINT_TYPE);
 }
 
 /* stype sig: print the type of a signal. */
 int hc_cmd_stype(int argc, char *argv[])
 {
-    hal_type_t type;
-    hal_data_u value;
-    int writers, rc;
     (void)argc;
-    rc = hal_get_s(argv[0], &type, &value, &writers);
-    if (rc < 0) {
-        hc_error("signal '%s': %s", argv[0], hal_strerror(rc));
-        return -1;
-    }
-    printf("%s\n", hc_type_name(type));
-    return 0;
+    return hc_print_item(argv[0], HC_SIGNAL, HC_PRINT_TYPE);
 }

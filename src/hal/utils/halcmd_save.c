@@ -31,27 +31,25 @@ static void hc_save_comps(FILE *out)
     }
 }
 
+/* Print one alias command if aliased, with the section header before the first. */
+static void hc_save_alias(FILE *out, const char *kind, int *first, int oldname, const char *name)
+{
+    if (!oldname)
+        return;
+    if (*first)
+        fprintf(out, "# %s aliases\n", kind);
+    *first = 0;
+    fprintf(out, "alias %s %s %s\n", kind, halpr_original_name(oldname), name);
+}
+
 /* Print alias commands for aliased pins and params. */
 static void hc_save_aliases(FILE *out)
 {
-    int first = 1;
-    for (hal_pin_t *p = halpr_first_pin(); p; p = halpr_next_pin(p)) {
-        if (!p->oldname)
-            continue;
-        if (first)
-            fprintf(out, "# pin aliases\n");
-        first = 0;
-        fprintf(out, "alias pin %s %s\n", halpr_original_name(p->oldname), p->name);
-    }
-    first = 1;
-    for (hal_param_t *p = halpr_first_param(); p; p = halpr_next_param(p)) {
-        if (!p->oldname)
-            continue;
-        if (first)
-            fprintf(out, "# param aliases\n");
-        first = 0;
-        fprintf(out, "alias param %s %s\n", halpr_original_name(p->oldname), p->name);
-    }
+    int first_pin = 1, first_param = 1;
+    for (hal_pin_t *p = halpr_first_pin(); p; p = halpr_next_pin(p))
+        hc_save_alias(out, "pin", &first_pin, p->oldname, p->name);
+    for (hal_param_t *p = halpr_first_param(); p; p = halpr_next_param(p))
+        hc_save_alias(out, "param", &first_param, p->oldname, p->name);
 }
 
 /* Print newsig lines (all signals, or only pinless ones). */

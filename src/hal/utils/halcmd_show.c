@@ -74,18 +74,24 @@ const char *hc_sig_arrow(int dir)
     return dir == HAL_IN ? "==>" : dir == HAL_OUT ? "<==" : "<=>";
 }
 
-/* Print one pin line. */
-static void hc_show_pin(hal_pin_t *p)
+/* Print the owner, type, dir, value and name columns of a pin or param line. */
+static void hc_show_item(int owner_ptr, int type, int dir, const hal_data_u *cell,
+                         const char *name)
 {
     char val[64];
-    hal_comp_t *owner = halpr_owner(p->owner_ptr);
-    hc_show_value(p->type, (const void *)halpr_pin_value(p), val, sizeof val);
+    hal_comp_t *owner = halpr_owner(owner_ptr);
+    hc_show_value(type, (const void *)cell, val, sizeof val);
     if (hc.script_mode)
-        hc_out("%s %s %s %s %s", owner->name, hc_type_name5(p->type), hc_dir_name(p->dir),
-               val, p->name);
+        hc_out("%s %s %s %s %s", owner->name, hc_type_name5(type), hc_dir_name(dir), val, name);
     else
-        hc_out(" %5d  %s %-3s  %s  %s", owner->comp_id, hc_type_name5(p->type),
-               hc_dir_name(p->dir), val, p->name);
+        hc_out(" %5d  %s %-3s  %s  %s", owner->comp_id, hc_type_name5(type), hc_dir_name(dir),
+               val, name);
+}
+
+/* Print one pin line, with the signal it is linked to. */
+static void hc_show_pin(hal_pin_t *p)
+{
+    hc_show_item(p->owner_ptr, p->type, p->dir, halpr_pin_value(p), p->name);
     if (p->signal)
         hc_out(" %s %s", hc_pin_arrow(p->dir), ((hal_sig_t *)SHMPTR(p->signal))->name);
     hc_out("\n");
@@ -105,20 +111,13 @@ void hc_show_pins(int type, char *pat[], int npat)
 /* Print the param section. */
 void hc_show_params(int type, char *pat[], int npat)
 {
-    char val[64];
     if (!hc.script_mode)
         hc_out("Parameters:\nOwner   Type  Dir                 Value  Name\n");
     for (hal_param_t *p = halpr_first_param(); p; p = halpr_next_param(p)) {
         if ((type >= 0 && (int)p->type != type) || !hc_match(pat, npat, p->name))
             continue;
-        hal_comp_t *owner = halpr_owner(p->owner_ptr);
-        hc_show_value(p->type, (const void *)halpr_param_value(p), val, sizeof val);
-        if (hc.script_mode)
-            hc_out("%s %s %s %s %s\n", owner->name, hc_type_name5(p->type),
-                   hc_dir_name(p->dir), val, p->name);
-        else
-            hc_out(" %5d  %s %-3s  %s  %s\n", owner->comp_id, hc_type_name5(p->type),
-                   hc_dir_name(p->dir), val, p->name);
+        hc_show_item(p->owner_ptr, p->type, p->dir, halpr_param_value(p), p->name);
+        hc_out("\n");
     }
     hc_out("\n");
 }

@@ -77,12 +77,14 @@ def first_word(text):
 def substitute(text, ini_entries):
     """Replace $NAME, $(NAME), [SECTION]KEY and [SECTION](KEY) like halcmd does."""
     def env(m):
+        """The value of the environment variable matched by m (it must exist)."""
         name = m.group(1) or m.group(2)
         if name not in os.environ:
             fail("Environment variable '%s' not found." % name)
         return os.environ[name]
 
     def ini(m):
+        """The INI value matched by m; any section when the section is empty."""
         sec, key = m.group(1), m.group(2) or m.group(3)
         for s, k, v in ini_entries:
             if k == key and (sec == "" or s == sec):
@@ -97,6 +99,7 @@ class Module:
     """All loadrt requests of one module, merged into a single loadrt."""
 
     def __init__(self, name):
+        """An empty merge for module name."""
         self.name, self.form, self.count = name, None, 0
         self.names, self.personality, self.debug = [], [], None
         self.other, self.bare = {}, 0

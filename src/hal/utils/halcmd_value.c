@@ -178,60 +178,55 @@ int hc_parse_value(int type, const char *text, hc_value_t *out)
     }
 }
 
+/* Format an unsigned value: decimal when hex_digits is 0, else 0x<digits> right-aligned in 20. */
+static void hc_format_u64(uint64_t value, int hex_digits, char *buf, size_t size)
+{
+    if (hex_digits == 0)
+        snprintf(buf, size, "%llu", (unsigned long long)value);
+    else
+        snprintf(buf, size, "%*s0x%0*llX", 18 - hex_digits, "", hex_digits,
+                 (unsigned long long)value);
+}
+
+/* Format a value cell: the 20-column show field when wide, else getp's plain text. */
+static void hc_format_value(int type, const void *cell, int wide, char *buf, size_t size)
+{
+    int width = wide ? 20 : 0;
+    switch (type) {
+    case HAL_BIT:
+        snprintf(buf, size, "%*s", width, *(const volatile uint8_t *)cell ? "TRUE" : "FALSE");
+        break;
+    case HAL_FLOAT:
+        snprintf(buf, size, "%*.7g", width, *(const volatile double *)cell);
+        break;
+    case HAL_S32:
+        snprintf(buf, size, "%*d", width, (int)*(const volatile int32_t *)cell);
+        break;
+    case HAL_U32:
+        hc_format_u64(*(const volatile uint32_t *)cell, wide ? 8 : 0, buf, size);
+        break;
+    case HAL_S64:
+        snprintf(buf, size, "%*lld", width, (long long)*(const volatile int64_t *)cell);
+        break;
+    case HAL_U64:
+        hc_format_u64(*(const volatile uint64_t *)cell, wide ? 16 : 0, buf, size);
+        break;
+    default:
+        snprintf(buf, size, "%*d", width, *(const volatile int *)cell);
+        break;
+    }
+}
+
 /* Format a value cell in the 20-column field of show and save. */
 void hc_format_value20(int type, const void *cell, char *buf, size_t size)
 {
-    switch (type) {
-    case HAL_BIT:
-        snprintf(buf, size, "%20s", *(const volatile uint8_t *)cell ? "TRUE" : "FALSE");
-        break;
-    case HAL_FLOAT:
-        snprintf(buf, size, "%20.7g", *(const volatile double *)cell);
-        break;
-    case HAL_S32:
-        snprintf(buf, size, "%20d", (int)*(const volatile int32_t *)cell);
-        break;
-    case HAL_U32:
-        snprintf(buf, size, "          0x%08X", (unsigned)*(const volatile uint32_t *)cell);
-        break;
-    case HAL_S64:
-        snprintf(buf, size, "%20lld", (long long)*(const volatile int64_t *)cell);
-        break;
-    case HAL_U64:
-        snprintf(buf, size, "  0x%016llX", (unsigned long long)*(const volatile uint64_t *)cell);
-        break;
-    default:
-        snprintf(buf, size, "%20d", *(const volatile int *)cell);
-        break;
-    }
+    hc_format_value(type, cell, 1, buf, size);
 }
 
 /* Format a value cell as getp prints it (no padding, integers decimal). */
 void hc_format_value_plain(int type, const void *cell, char *buf, size_t size)
 {
-    switch (type) {
-    case HAL_BIT:
-        snprintf(buf, size, "%s", *(const volatile uint8_t *)cell ? "TRUE" : "FALSE");
-        break;
-    case HAL_FLOAT:
-        snprintf(buf, size, "%.7g", *(const volatile double *)cell);
-        break;
-    case HAL_S32:
-        snprintf(buf, size, "%d", (int)*(const volatile int32_t *)cell);
-        break;
-    case HAL_U32:
-        snprintf(buf, size, "%u", (unsigned)*(const volatile uint32_t *)cell);
-        break;
-    case HAL_S64:
-        snprintf(buf, size, "%lld", (long long)*(const volatile int64_t *)cell);
-        break;
-    case HAL_U64:
-        snprintf(buf, size, "%llu", (unsigned long long)*(const volatile uint64_t *)cell);
-        break;
-    default:
-        snprintf(buf, size, "%d", *(const volatile int *)cell);
-        break;
-    }
+    hc_format_value(type, cell, 0, buf, size);
 }
 
 /* Format a value for -s listings: the 20-column text without leading blanks. */

@@ -1,11 +1,11 @@
 // comp_unit.cc: drives the cutter compensation engine from a script on stdin and prints the canon calls.
-#include <iostream>
 #include <memory>
 #include <string>
 
 #include "emc/rs274ngc/interp_hooks.hh"
 #include "../../interp-cycles/unit/record_canon.hh"
 #include "../../interp-cycles/unit/script_block.hh"
+#include "../../interp-cycles/unit/script_run.hh"
 
 // The script state: interpreter state, the real (printing) canon and the engine in front of it.
 struct Driver {
@@ -18,10 +18,7 @@ struct Driver {
 static Pose end_of(const InterpState &s, const Block &b)
 {
     Pose p = s.current;
-    const char letters[] = "xyzabc";
-    for (int i = 0; i < 6; i++)
-        if (b.word(letters[i]))
-            p[i] = b.value(letters[i]);
+    take_axis_words(b, p);
     return p;
 }
 
@@ -104,21 +101,10 @@ static void run_line(Driver &d, const std::string &text)
 int main()
 {
     Driver d;
-    std::string line;
-    while (std::getline(std::cin, line)) {
-        if (line.empty())
-            continue;
-        std::cout << "> " << line << std::endl;
-        if (line[0] == '#')
-            continue;
-        try {
-            run_line(d, line);
-        } catch (const InterpError &e) {
-            std::cout << "ERROR: " << e.what() << std::endl;
+    return run_script(
+        std::cin, [&](const std::string &line) { run_line(d, line); },
+        [&] {
             d.engine->reset();
             d.s.comp_side = CANON_SIDE_OFF;
-        }
-        std::cout.flush();
-    }
-    return 0;
+        });
 }

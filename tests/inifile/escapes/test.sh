@@ -4,5 +4,5 @@ for k in SIMPLE OCTAL HEX EDGE U4 U8 PAIR TRAILBS; do
     echo "-- $k"
     inivar -ini esc.ini -var $k 2> /dev/null | od -An -c
 done
-q -ini esc.ini -var IMPROPER
-for f in nul-octal nul-u bad-x lone-surrogate bad-utf8 too-big short-u; do q -ini $f.ini -var X; done
+vars esc.ini IMPROPER
+for f in nul-octal nul-u bad-x lone-surrogate bad-utf8 too-big short-u; do vars $f.ini X; done

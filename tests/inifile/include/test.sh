@@ -5,9 +5,7 @@ q -ini main.ini -var DEEP -sec A
 q -ini main.ini -var CONTINUED -sec B
 q -ini main.ini -var FROM_PART -sec B
 q -ini main.ini -var TAB -sec C
-q -ini self.ini -var X
-q -ini loop1.ini -var X
-q -ini missing.ini -var X
+for f in self loop1 missing; do vars $f.ini X; done
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 printf 'HOMEVAL = from home\n' > "$work/home.ini"

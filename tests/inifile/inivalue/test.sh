@@ -1,10 +1,7 @@
 # inivalue: typed output, ranges, listings, --all/--prefix and its exit codes (0, 1, 2, 3).
 . "$TEST_DIR/../lib.sh"
-v() {
-    local rc=0
-    inivalue "$@" 2>&1 || rc=$?
-    echo "[exit $rc]"
-}
+# v ARGS...: inivalue with its output and exit status
+v() { with_status inivalue "$@"; }
 v --var=MACHINE values.ini
 HOME=/home/tester v --var PATH --tildeexpand values.ini
 v --var MAX_VELOCITY --type=r values.ini

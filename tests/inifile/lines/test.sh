@@ -9,9 +9,9 @@ printf '[A]\nX = tabs and blanks\t \t\nY = no final newline' > blanks.ini
 printf '[A]\nX = a\000b\n' > nul.ini
 : > empty.ini
 q -ini crlf.ini -var X | od -An -c
-q -ini crlf.ini -var Y
-q -ini cr.ini -var X
+vars crlf.ini Y
+vars cr.ini X
 q -ini blanks.ini -var X | od -An -c
-q -ini blanks.ini -var Y
-q -ini nul.ini -var X
-q -ini empty.ini -var X
+vars blanks.ini Y
+vars nul.ini X
+vars empty.ini X

@@ -6,4 +6,4 @@ q -ini merge.ini -var MACHINE -sec emc
 q -ini merge.ini -var MACHINE -num 3
 q -ini merge.ini -var UNITS -sec TRAJ
 q -ini merge.ini -var MACHINE -sec NOPE
-for f in missing empty badchar digit; do q -ini $f.ini -var X; done
+for f in missing empty badchar digit; do vars $f.ini X; done

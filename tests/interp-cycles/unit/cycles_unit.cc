@@ -1,10 +1,10 @@
 // cycles_unit.cc: drives the canned cycles and G76 from a script on stdin and prints the canon calls.
-#include <iostream>
 #include <string>
 
 #include "emc/rs274ngc/interp_hooks.hh"
 #include "record_canon.hh"
 #include "script_block.hh"
+#include "script_run.hh"
 
 // apply one modal G code of the script to the state; true when it is a cycle motion code
 static bool apply_g(InterpState &s, int g)
@@ -34,10 +34,7 @@ static bool apply_g(InterpState &s, int g)
 // "g0 x y z": jump the current point there without output, ending any cycle sequence
 static void position(InterpState &s, const Block &b)
 {
-    const char letters[] = "xyzabc";
-    for (int i = 0; i < 6; i++)
-        if (b.word(letters[i]))
-            s.current[i] = b.value(letters[i]);
+    take_axis_words(b, s.current);
     s.motion_mode = 0;
     s.cycle_last = -1;
     s.cycle_il_valid = false;
@@ -87,19 +84,6 @@ int main()
     s.peck_clearance_g83 = 0.1;
     s.feed_rate = 10;
     RecordCanon canon;
-    std::string line;
-    while (std::getline(std::cin, line)) {
-        if (line.empty())
-            continue;
-        std::cout << "> " << line << std::endl;
-        if (line[0] == '#')
-            continue;
-        try {
-            run_line(s, canon, line);
-        } catch (const InterpError &e) {
-            std::cout << "ERROR: " << e.what() << std::endl;
-        }
-        std::cout.flush();
-    }
-    return 0;
+    return run_script(
+        std::cin, [&](const std::string &line) { run_line(s, canon, line); }, [] {});
 }

@@ -26,6 +26,7 @@ public:
     void set_feed_reference(CanonFeedReference) override { plain("SET_FEED_REFERENCE"); }
     void set_feed_mode(int s, int m) override { std::printf("SET_FEED_MODE(%d, %d)\n", s, m); }
     void set_feed_rate(double r) override { std::printf("SET_FEED_RATE(%.4f)\n", r); }
+    // G61/G61.1/G64: the tolerance is printed only in continuous mode, as rs274 does
     void set_motion_control_mode(CanonMotionMode m, double t) override
     {
         if (m == CANON_CONTINUOUS)
@@ -39,6 +40,7 @@ public:
 
     void straight_traverse(int, const CanonPose &p) override { move("STRAIGHT_TRAVERSE", p); }
     void straight_feed(int, const CanonPose &p) override { move("STRAIGHT_FEED", p); }
+    // an arc with its end, center, rotation, axis end and the A B C ends
     void arc_feed(int, double e1, double e2, double c1, double c2, int rot, double ae, double a,
                   double b, double c, double, double, double) override
     {

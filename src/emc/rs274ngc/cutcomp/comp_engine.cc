@@ -13,6 +13,21 @@ static Pose pose_of(const CanonPose &p)
     return {p.x, p.y, p.z, p.a, p.b, p.c, p.u, p.v, p.w};
 }
 
+// a held arc of the given line: center, direction, untrimmed and trimmed start, end pose
+static HeldMove held_arc(int line, Vec2 center, int rotation, Vec2 arc_from, Vec2 start,
+                         const Pose &end)
+{
+    HeldMove m;
+    m.kind = HeldMove::ARC;
+    m.line = line;
+    m.center = center;
+    m.rotation = rotation;
+    m.arc_from = arc_from;
+    m.start = start;
+    m.end = end;
+    return m;
+}
+
 // set up with compensation off
 CompEngine::CompEngine(InterpState &s, Canon &out) : CompFilter(out), s_(s)
 {
@@ -57,28 +72,31 @@ void CompEngine::flush_all()
     queue_.flush(out_, ax_, shift_);
 }
 
+// a straight move: passed through while comp is off, else offset and held
+void CompEngine::straight_move(HeldMove::Kind kind, int line, const CanonPose &p)
+{
+    if (compensating()) {
+        line_move(kind, line, pose_of(p));
+        return;
+    }
+    flush_all();
+    exit_pending_ = false;
+    if (kind == HeldMove::TRAVERSE)
+        out_.straight_traverse(line, p);
+    else
+        out_.straight_feed(line, p);
+}
+
 // rapid: compensated like a feed, emitted as a traverse
 void CompEngine::straight_traverse(int line, const CanonPose &p)
 {
-    if (!compensating()) {
-        flush_all();
-        exit_pending_ = false;
-        out_.straight_traverse(line, p);
-        return;
-    }
-    line_move(HeldMove::TRAVERSE, line, pose_of(p));
+    straight_move(HeldMove::TRAVERSE, line, p);
 }
 
 // feed: compensated while comp is on
 void CompEngine::straight_feed(int line, const CanonPose &p)
 {
-    if (!compensating()) {
-        flush_all();
-        exit_pending_ = false;
-        out_.straight_feed(line, p);
-        return;
-    }
-    line_move(HeldMove::FEED, line, pose_of(p));
+    straight_move(HeldMove::FEED, line, p);
 }
 
 // arc: compensated while comp is on; not allowed as the move leaving compensation
@@ -149,9 +167,7 @@ void CompEngine::line_move(HeldMove::Kind kind, int line, const Pose &end)
     }
     double theta = angle_of(e2 - s2);
     Vec2 n = line_normal(theta);
-    PathShape shape;
-    shape.p = s2 + radius_ * n;
-    shape.d = polar(theta);
+    PathShape shape = line_shape(s2 + radius_ * n, polar(theta));
     Joint j;
     j.dir = shape.d;
     j.start = shape.p;
@@ -184,9 +200,7 @@ void CompEngine::entry_line(HeldMove::Kind kind, int line, const Pose &end)
     }
     double theta = angle_of(e2 - s2);
     Vec2 e_off = e2 + radius_ * line_normal(theta);
-    PathShape shape;
-    shape.p = e_off;
-    shape.d = polar(theta);
+    PathShape shape = line_shape(e_off, polar(theta));
     HeldMove m;
     m.kind = kind;
     m.line = line;
@@ -210,10 +224,7 @@ void CompEngine::arc_move(int line, const Pose &end, Vec2 center, int rotation)
     if (k < 0 && r0 <= radius_)
         throw InterpError("Tool radius not less than arc radius with comp");
     double r_end = distance(e2, center) + k * radius_;
-    PathShape shape;
-    shape.is_arc = true;
-    shape.center = center;
-    shape.radius = k > 0 ? r_end : r0 + k * radius_;
+    PathShape shape = arc_shape(center, k > 0 ? r_end : r0 + k * radius_);
     Vec2 start = center + (r0 + k * radius_) * polar(angle_of(s2 - center));
     Vec2 e_off = center + r_end * polar(angle_of(e2 - center));
     double kappa = (rotation > 0 ? 1.0 : -1.0) / r0;
@@ -225,17 +236,10 @@ void CompEngine::arc_move(int line, const Pose &end, Vec2 center, int rotation)
     j.shape = shape;
     j.corner_point = s2;
     j.rotation = rotation;
-    HeldMove m;
-    m.kind = HeldMove::ARC;
-    m.line = line;
-    m.center = center;
-    m.rotation = rotation;
-    m.arc_from = start;
-    m.start = corner(j);
-    m.end = with_plane_point(ax_, end, e_off);
-    PathShape end_shape = shape;
-    end_shape.radius = r_end;
-    hold(m, arc_tangent(center, e2, rotation), kappa, end_shape);
+    Vec2 trimmed_start = corner(j);
+    HeldMove m = held_arc(line, center, rotation, start, trimmed_start,
+                          with_plane_point(ax_, end, e_off));
+    hold(m, arc_tangent(center, e2, rotation), kappa, arc_shape(center, r_end));
 }
 
 // entry arc: the end is offset radially, the center moves along the end radius
@@ -254,20 +258,10 @@ void CompEngine::entry_arc(int line, const Pose &end, Vec2 center, int rotation)
     if (!entry_arc_center(s2, center, e2, e_off, c2))
         throw InterpError("Arc move in concave corner cannot be reached by the tool without "
                           "gouging");
-    HeldMove m;
-    m.kind = HeldMove::ARC;
-    m.line = line;
-    m.center = c2;
-    m.rotation = rotation;
-    m.start = s2;
-    m.arc_from = s2;
-    m.end = with_plane_point(ax_, end, e_off);
-    PathShape shape;
-    shape.is_arc = true;
-    shape.center = c2;
-    shape.radius = distance(e_off, c2);
+    HeldMove m = held_arc(line, c2, rotation, s2, s2, with_plane_point(ax_, end, e_off));
     flush_all();
-    hold(m, arc_tangent(center, e2, rotation), (rotation > 0 ? 1.0 : -1.0) / r_end, shape);
+    hold(m, arc_tangent(center, e2, rotation), (rotation > 0 ? 1.0 : -1.0) / r_end,
+         arc_shape(c2, distance(e_off, c2)));
 }
 
 }  // namespace cutcomp

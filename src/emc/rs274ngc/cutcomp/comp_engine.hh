@@ -33,6 +33,8 @@ protected:
 private:
     // true when moves must be compensated
     bool compensating() const { return active_ && radius_ > 0; }
+    // a straight move, compensated or passed through
+    void straight_move(HeldMove::Kind kind, int line, const CanonPose &p);
     // a straight move while compensating
     void line_move(HeldMove::Kind kind, int line, const Pose &end);
     // an arc while compensating

@@ -34,6 +34,25 @@ struct PathShape {
     double radius = 0;  // arc: radius
 };
 
+// the shape of a line through p with unit direction d
+inline PathShape line_shape(Vec2 p, Vec2 d)
+{
+    PathShape shape;
+    shape.p = p;
+    shape.d = d;
+    return shape;
+}
+
+// the shape of an arc (circle) of the given center and radius
+inline PathShape arc_shape(Vec2 center, double radius)
+{
+    PathShape shape;
+    shape.is_arc = true;
+    shape.center = center;
+    shape.radius = radius;
+    return shape;
+}
+
 // the points where two path shapes meet (0, 1 or 2 of them, written to out)
 int intersections(const PathShape &a, const PathShape &b, Vec2 out[2]);
 

@@ -18,27 +18,29 @@ static void body_g82(CycleMoves &mv, const Hole &h)
     mv.rapid_depth(h.clear);
 }
 
-// G83 peck drilling: each peck retracts to R, then rapids back to just above the cut depth
-static void body_g83(CycleMoves &mv, const Hole &h)
+// peck drilling: each peck backs off by the clearance, after a retract to R when full_retract
+static void peck(CycleMoves &mv, const Hole &h, bool full_retract)
 {
     for (double d = h.r - h.peck; d > h.bottom; d -= h.peck) {
         mv.feed_depth(d);
-        mv.rapid_depth(h.r);
+        if (full_retract)
+            mv.rapid_depth(h.r);
         mv.rapid_depth(d + h.peck_clearance);
     }
     mv.feed_depth(h.bottom);
     mv.rapid_depth(h.clear);
 }
 
+// G83 peck drilling: each peck retracts to R, then rapids back to just above the cut depth
+static void body_g83(CycleMoves &mv, const Hole &h)
+{
+    peck(mv, h, true);
+}
+
 // G73 chip-break drilling: each peck backs off by the clearance only
 static void body_g73(CycleMoves &mv, const Hole &h)
 {
-    for (double d = h.r - h.peck; d > h.bottom; d -= h.peck) {
-        mv.feed_depth(d);
-        mv.rapid_depth(d + h.peck_clearance);
-    }
-    mv.feed_depth(h.bottom);
-    mv.rapid_depth(h.clear);
+    peck(mv, h, false);
 }
 
 // start spindle s turning in direction dir
