@@ -60,6 +60,8 @@ void Interp::init()
     s_.feed_hold = c.get_external_feed_hold_enable();
     s_.adaptive_feed = c.get_external_adaptive_feed_enable();
     read_var_file();
+    if (s_.settings.disable_g92_persistence)
+        for (int i = 5210; i <= 5219; i++) s_.params[i] = 0;
     s_.current_pocket = c.get_external_tool_slot();
     s_.selected_pocket = c.get_external_selected_tool_slot();
     c.use_length_units(s_.units);

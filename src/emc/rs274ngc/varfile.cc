@@ -53,7 +53,6 @@ void Interp::write_var_file()
     if (!f) return;
     for (int n = 1; n < PARAM_COUNT; n++) {
         if (!persistent(n) && !in_var_file_.count(n)) continue;
-        if (s_.settings.disable_g92_persistence && n >= 5210 && n <= 5219) continue;
         fprintf(f, "%d\t%f\n", n, s_.params[n]);
     }
     if (fclose(f) != 0) {
