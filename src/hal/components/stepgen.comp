@@ -88,15 +88,17 @@ static int user_cycle_len, user_phases;
    assumed to be 50 us and the servo period 1 ms, so the first update-freq call
    works with those scale factors, as the reference implementation does. */
 static long base_ns = 50000, base_ns_used = 50000, servo_ns_used = 1000000;
+static int base_known;
 static double base_s = 50000e-9, servo_s = 1e-3, servo_rate = 1e3;
 static double per_hz = STEPGEN_ONE * 50000e-9, per_hz_s = STEPGEN_ONE * 50000e-9 * 50000e-9;
 
-/* Round a timing parameter up to whole make-pulses periods (at least `min_ns`) and store it back. */
+/* Round a timing parameter up to whole make-pulses periods (at least `min_ns`); the
+   result is stored back once the real make-pulses period is known. */
 static long stepgen_round(hal_u32_t *ns, hal_u32_t min_ns)
 {
     long n = *ns < min_ns ? min_ns : *ns;
     n = (n + base_ns - 1) / base_ns * base_ns;
-    *ns = (hal_u32_t)n;
+    if (base_known) *ns = (hal_u32_t)n;
     return n;
 }
 
@@ -144,7 +146,8 @@ static double stepgen_timing_limit(struct __comp_state *__comp_inst)
 }
 
 /* Apply maxvel to the timing limit (correcting a too high maxvel); returns steps/s. */
-static double stepgen_vel_limit(struct __comp_state *__comp_inst, int chan, double fmax, double scale)
+static double stepgen_vel_limit(struct __comp_state *__comp_inst, int chan, double fmax,
+                                double scale)
 {
     double want;
     if (maxvel <= 0.0) {
@@ -362,6 +365,7 @@ static void stepgen_make_pulses(void *arg, long period)
 {
     (void)arg;
     base_ns = period;
+    base_known = 1;
     FOR_ALL_INSTS() stepgen_pulses_one(__comp_inst);
 }
 

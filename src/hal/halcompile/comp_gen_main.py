@@ -138,13 +138,15 @@ def gen_create_instances(comp, out):
         out.append('        r = __comp_export_count(get_count());')
         out.append('    }')
         return
+    # Unlike the reference, a bad combination still reaches hal_exit (no stale comp).
     out.append('    if (count && names[0]) {')
     out.append('        rtapi_print_msg(RTAPI_MSG_ERR, "count= and names= are mutually exclusive\\n");')
-    out.append('        return -EINVAL;')
+    out.append('        r = -EINVAL;')
+    out.append('    } else {')
+    out.append('        if (!count && !names[0]) count = default_count;')
+    out.append('        if (count) r = __comp_export_count(count);')
+    out.append('        else r = __comp_export_names();')
     out.append('    }')
-    out.append('    if (!count && !names[0]) count = default_count;')
-    out.append('    if (count) r = __comp_export_count(count);')
-    out.append('    else r = __comp_export_names();')
 
 
 def gen_app_main(comp, out):
