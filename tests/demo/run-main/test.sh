@@ -1,6 +1,7 @@
 #!/bin/bash
 # The make-run demo must print 60 samples in which limit3 keeps its 40 u/s slew
-# limit, lowpass stays between the square wave's extremes and the square wave flips.
+# limit, lowpass stays between the square wave's extremes and the square wave flips;
+# then the G-code part must show the tool-radius-offset outline and the call counts.
 set -e
 "$EMC2_HOME/scripts/run-main" > demo.out
 awk 'NF == 6 && $1 ~ /^[0-9]+$/ {
@@ -15,4 +16,6 @@ awk 'NF == 6 && $1 ~ /^[0-9]+$/ {
         print "square flips", (flips >= 2 ? "yes" : "no")
         printf "%s", bad
      }' demo.out
+grep -E '^ +[0-9]+ calls:' demo.out
+grep -c '^    STRAIGHT_FEED(32.0003, 27.0003, -2.0000' demo.out
 rm -f demo.out
