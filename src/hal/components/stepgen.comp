@@ -22,18 +22,17 @@ param rw u32 steplen = 1 "Step pulse length (types 0, 1) or minimum time in one 
 param rw u32 stepspace = 1 if (personality & 0xff) <= 1 "Minimum space between step pulses in ns";
 param rw u32 dirsetup = 1 if (personality & 0xff) == 0 "Time from a direction change to the next step, in ns";
 param rw u32 dirhold = 1 if (personality & 0xff) == 0 "Time from the end of a step pulse to a direction change, in ns";
-param rw u32 dirdelay = 1 if (personality & 0xff) >= 1 "Time from a step to a step in the other direction, in ns";
-variable long long accum = 2147483648;
+param rw u32 dirdelay = 1 if (personality & 0xff) >= 1 "Time from the end of a step to a step in the other direction, in ns";
+variable long long accum = 134217728;
 variable long long addval;
 variable long long target_addval;
-variable long long addval_step;
+variable long long deltalim;
+variable long pulse_ns;
+variable long dir_ok_ns;
+variable long reverse_ok_ns;
+variable int hold_dds;
 variable double freq;
 variable double old_pos_cmd;
-variable long pulse_left;
-variable long space_left;
-variable long hold_left;
-variable long setup_left;
-variable int cur_dir = 1;
 variable int state;
 variable int warned;
 option rtapi_app no;
@@ -46,14 +45,24 @@ ctrl_type=p|v,... (default p). Step types: 0 step/dir, 1 up/down, 2 quadrature,
 full step, 9 unipolar half step, 10 bipolar half step, 11 five-wire unipolar,
 12 five-wire wave, 13 five-wire unipolar half step, 14 five-wire wave half step,
 15 user defined by user_step_type=P0,P1,... (2 to 10 bit patterns, bit 0 = phase A).
-The position is a fixed-point phase accumulator with 32 fraction bits advanced by
-make-pulses; update-freq turns the command into the per-period increment under
-maxvel and maxaccel.""";
+
+The position is a 64-bit fixed-point accumulator whose bit 28 is the step bit; it
+starts at half a step, so steps happen half way between whole positions.
+make-pulses moves the per-period increment toward its target by at most one
+acceleration step, adds it to the accumulator and emits a step whenever the step
+bit changes. update-freq turns the command into that target under maxvel and
+maxaccel. After a step, a step the other way waits for steplen + dirhold +
+dirsetup (type 0) or steplen + dirdelay (other types); the dir output changes
+only once steplen + dirhold have passed. stepspace only lowers the highest
+step rate.""";
 ;;
 #define STEPGEN_MAX_CHAN 16
 #define STEPGEN_MAX_CYCLE 10
-#define STEPGEN_ONE 4294967296.0
-#define STEPGEN_HALF (1LL << 31)
+#define STEPGEN_PICKOFF 28
+#define STEPGEN_ONE (1LL << STEPGEN_PICKOFF)
+#define STEPGEN_HALF (1LL << (STEPGEN_PICKOFF - 1))
+#define STEPGEN_DEFAULT_BASE_NS 50000
+#define STEPGEN_DEFAULT_SERVO_NS 1000000
 
 static int step_type[STEPGEN_MAX_CHAN] = { [0 ... STEPGEN_MAX_CHAN - 1] = -1 };
 RTAPI_MP_ARRAY_INT(step_type, STEPGEN_MAX_CHAN, "stepping types for up to 16 channels");
@@ -84,22 +93,47 @@ static const unsigned char stepgen_phases[13] = {2, 3, 3, 4, 4, 4, 4, 4, 4, 5, 5
 static unsigned char user_cycle[STEPGEN_MAX_CYCLE];
 static int user_cycle_len, user_phases;
 
-/* Timing shared by all channels. Until make-pulses has run once its period is
-   assumed to be 50 us and the servo period 1 ms, so the first update-freq call
-   works with those scale factors, as the reference implementation does. */
-static long base_ns = 50000, base_ns_used = 50000, servo_ns_used = 1000000;
-static int base_known;
-static double base_s = 50000e-9, servo_s = 1e-3, servo_rate = 1e3;
-static double per_hz = STEPGEN_ONE * 50000e-9, per_hz_s = STEPGEN_ONE * 50000e-9 * 50000e-9;
+/* Timing shared by all channels. make-pulses records its period in base_ns; until
+   it has run, update-freq works with a 50 us base period (so its first call rounds
+   the timing params and scales the increment for 50 us, as the reference does). */
+static long base_ns, base_ns_used, servo_ns_used;
+static double per_hz, per_hz_s, servo_s, servo_rate;
 
-/* Round a timing parameter up to whole make-pulses periods (at least `min_ns`); the
-   result is stored back once the real make-pulses period is known. */
+/* Put the shared timing back to its load-time defaults. */
+static void stepgen_timing_init(void)
+{
+    base_ns = base_ns_used = STEPGEN_DEFAULT_BASE_NS;
+    servo_ns_used = STEPGEN_DEFAULT_SERVO_NS;
+    per_hz = STEPGEN_ONE * (STEPGEN_DEFAULT_BASE_NS * 0.000000001);
+    per_hz_s = per_hz * (STEPGEN_DEFAULT_BASE_NS * 0.000000001);
+    servo_s = STEPGEN_DEFAULT_SERVO_NS * 0.000000001;
+    servo_rate = 1.0 / servo_s;
+}
+
+/* Recompute the scale factors when the make-pulses or servo period changed. */
+static void stepgen_update_scales(long servo_period)
+{
+    if (base_ns != base_ns_used) {
+        double base_s = base_ns * 0.000000001;
+        base_ns_used = base_ns;
+        per_hz = STEPGEN_ONE * base_s;
+        per_hz_s = per_hz * base_s;
+    }
+    if (servo_period != servo_ns_used) {
+        servo_ns_used = servo_period;
+        servo_s = servo_period * 0.000000001;
+        servo_rate = 1.0 / servo_s;
+    }
+}
+
+/* Round a timing parameter (raised to `min_ns` first) up to whole make-pulses
+   periods, store it back and return it. */
 static long stepgen_round(hal_u32_t *ns, hal_u32_t min_ns)
 {
-    long n = *ns < min_ns ? min_ns : *ns;
-    n = (n + base_ns - 1) / base_ns * base_ns;
-    if (base_known) *ns = (hal_u32_t)n;
-    return n;
+    unsigned long long n = *ns < min_ns ? min_ns : *ns;
+    if (n) n = ((n - 1) / (unsigned long long)base_ns + 1) * (unsigned long long)base_ns;
+    *ns = (hal_u32_t)n;
+    return (long)*ns;
 }
 
 /* Pattern of state `s` for the channel's step type (2..15). */
@@ -114,23 +148,13 @@ static int stepgen_cycle_length(int type)
     return type == 15 ? user_cycle_len : stepgen_cycle_len[type - 2];
 }
 
-/* Recompute the scale factors when the make-pulses or servo period changed. */
-static void stepgen_update_scales(long servo_period)
+/* Direction hold time of the channel: dirhold (type 0) or dirdelay (others), in ns. */
+static long stepgen_hold_ns(struct __comp_state *__comp_inst)
 {
-    if (base_ns != base_ns_used) {
-        base_ns_used = base_ns;
-        base_s = base_ns * 0.000000001;
-        per_hz = STEPGEN_ONE * base_s;
-        per_hz_s = per_hz * base_s;
-    }
-    if (servo_period != servo_ns_used) {
-        servo_ns_used = servo_period;
-        servo_s = servo_period * 0.000000001;
-        servo_rate = 1.0 / servo_s;
-    }
+    return (personality & 0xff) == 0 ? (long)dirhold : (long)dirdelay;
 }
 
-/* Highest step rate (steps/s) the pulse timing allows; rounds the timing params. */
+/* Round the timing params; returns the highest step rate (steps/s) they allow. */
 static double stepgen_timing_limit(struct __comp_state *__comp_inst)
 {
     int type = personality & 0xff;
@@ -140,7 +164,7 @@ static double stepgen_timing_limit(struct __comp_state *__comp_inst)
         stepgen_round(&dirsetup, 0);
         stepgen_round(&dirhold, 0);
     } else {
-        stepgen_round(&dirdelay, 0);
+        stepgen_round(&dirdelay, 1);
     }
     return 1.0 / (min_period * 0.000000001);
 }
@@ -201,28 +225,33 @@ static double stepgen_plan(double cmd, double cmd_vel, double pos, double vel, d
     double out_end = pos + (cmd_vel + vel) * 0.5 * t_match;
     double cmd_end = cmd + cmd_vel * (t_match - 1.5 * servo_s);
     double err = out_end - cmd_end;
+    double flip_dp;
     if (t_match < servo_s) {
         if (fabs(err) < 0.0001) return cmd_vel;
         return stepgen_clamp(cmd_vel - 0.5 * err * servo_rate, vel - amax * servo_s,
                              vel + amax * servo_s);
     }
-    if (fabs(err + -2.0 * ac * servo_s * t_match * 2.0) < fabs(err)) ac = -ac;
+    flip_dp = -2.0 * ac * servo_s * t_match;
+    if (fabs(err + flip_dp * 2.0) < fabs(err)) ac = -ac;
     return vel + ac * servo_s;
+}
+
+/* Valid position scale of the channel: a (near) zero scale is reset to 1. */
+static double stepgen_scale(struct __comp_state *__comp_inst)
+{
+    if (position_scale < 1e-20 && position_scale > -1e-20) position_scale = 1.0;
+    return position_scale;
 }
 
 /* Servo-rate part of one channel: choose the step rate for the next period. */
 static void stepgen_freq_one(struct __comp_state *__comp_inst, int chan)
 {
-    double scale, fmax, amax, nv;
-    if (position_scale < 1e-20 && position_scale > -1e-20) position_scale = 1.0;
-    scale = position_scale;
+    double scale = stepgen_scale(__comp_inst), fmax, amax, nv;
     fmax = stepgen_timing_limit(__comp_inst);
     if (!enable) {
         if (!(personality & 0x100)) old_pos_cmd = position_cmd * scale;
-        freq = 0;
-        addval = 0;
-        target_addval = 0;
-        frequency = 0;
+        freq = frequency = 0;
+        addval = target_addval = 0;
         return;
     }
     fmax = stepgen_vel_limit(__comp_inst, chan, fmax, scale);
@@ -238,16 +267,56 @@ static void stepgen_freq_one(struct __comp_state *__comp_inst, int chan)
         old_pos_cmd = cmd;
         nv = stepgen_clamp(stepgen_plan(cmd, cmd_vel, pos, freq, amax), -fmax, fmax);
     }
-    freq = nv;
-    frequency = nv;
+    freq = frequency = nv;
     target_addval = (long long)(nv * per_hz);
-    addval_step = (long long)(amax * per_hz_s);
+    deltalim = (long long)(amax * per_hz_s);
 }
 
-/* Drive the phase outputs from the current state (types 2..15). */
-static void stepgen_phase_out(struct __comp_state *__comp_inst)
+/* Count a timer down by one make-pulses period; returns TRUE when it just ran out. */
+static int stepgen_count_down(long *timer_ns)
 {
-    unsigned bits = stepgen_pattern(personality & 0xff, state);
+    if (*timer_ns <= 0) return 0;
+    *timer_ns = *timer_ns > base_ns ? *timer_ns - base_ns : 0;
+    return *timer_ns == 0;
+}
+
+/* Move addval toward its target by at most deltalim; a change of sign while a step
+   the other way is not yet allowed freezes the accumulator until it is. */
+static void stepgen_ramp(struct __comp_state *__comp_inst)
+{
+    long long old = addval;
+    if (deltalim == 0) addval = target_addval;
+    else if (target_addval > addval + deltalim) addval += deltalim;
+    else if (target_addval < addval - deltalim) addval -= deltalim;
+    else addval = target_addval;
+    if ((addval >= 0) != (old >= 0) && reverse_ok_ns != 0) hold_dds = 1;
+}
+
+/* Emit one step in the direction of addval and restart the timing constraints. */
+static void stepgen_step(struct __comp_state *__comp_inst)
+{
+    int type = personality & 0xff;
+    pulse_ns = steplen;
+    dir_ok_ns = pulse_ns + stepgen_hold_ns(__comp_inst);
+    reverse_ok_ns = dir_ok_ns + (type == 0 ? (long)dirsetup : 0);
+    if (type == 0) step = 1;
+    else if (type == 1 && addval > 0) up = 1;
+    else if (type == 1) down = 1;
+    else if (addval > 0) state = state + 1 < stepgen_cycle_length(type) ? state + 1 : 0;
+    else state = state > 0 ? state - 1 : stepgen_cycle_length(type) - 1;
+}
+
+/* Drive the level outputs: dir (type 0) once it may change, the phases (types 2..15). */
+static void stepgen_outputs(struct __comp_state *__comp_inst)
+{
+    unsigned bits;
+    int type = personality & 0xff;
+    if (type == 0) {
+        if (dir_ok_ns == 0) dir = addval < 0;
+        return;
+    }
+    if (type == 1) return;
+    bits = stepgen_pattern(type, state);
     phase_A = bits & 1;
     phase_B = (bits >> 1) & 1;
     if (phase_C_ptr) phase_C = (bits >> 2) & 1;
@@ -255,100 +324,32 @@ static void stepgen_phase_out(struct __comp_state *__comp_inst)
     if (phase_E_ptr) phase_E = (bits >> 4) & 1;
 }
 
-/* Count the timing constraints down by one make-pulses period; end finished pulses. */
-static void stepgen_timers(struct __comp_state *__comp_inst)
-{
-    pulse_left = pulse_left > base_ns ? pulse_left - base_ns : 0;
-    space_left = space_left > base_ns ? space_left - base_ns : 0;
-    hold_left = hold_left > base_ns ? hold_left - base_ns : 0;
-    setup_left = setup_left > base_ns ? setup_left - base_ns : 0;
-    if (pulse_left) return;
-    if (step_ptr) step = 0;
-    if (up_ptr) {
-        up = 0;
-        down = 0;
-    }
-}
-
-/* Move addval toward the target by at most one acceleration step. */
-static void stepgen_ramp(struct __comp_state *__comp_inst)
-{
-    if (addval_step == 0 || (target_addval <= addval + addval_step &&
-                             target_addval >= addval - addval_step))
-        addval = target_addval;
-    else if (target_addval > addval)
-        addval += addval_step;
-    else
-        addval -= addval_step;
-}
-
-/* Follow the sign of addval with the direction; returns 0 while the DDS must wait. */
-static int stepgen_direction(struct __comp_state *__comp_inst)
-{
-    int want = addval > 0 ? 1 : addval < 0 ? -1 : cur_dir;
-    if (want != cur_dir) {
-        if (hold_left > 0) return 0;
-        cur_dir = want;
-        if (dir_ptr) {
-            dir = want < 0;
-            setup_left = dirsetup;
-        }
-    }
-    return setup_left == 0;
-}
-
-/* Emit one step in direction cur_dir and start the timing constraints. */
-static void stepgen_emit(struct __comp_state *__comp_inst)
-{
-    int type = personality & 0xff;
-    pulse_left = steplen;
-    if (type == 0) {
-        step = 1;
-        space_left = (long)steplen + stepspace;
-        hold_left = (long)steplen + dirhold;
-        return;
-    }
-    hold_left = dirdelay;
-    if (type == 1) {
-        space_left = (long)steplen + stepspace;
-        if (cur_dir > 0) up = 1;
-        else down = 1;
-        return;
-    }
-    space_left = steplen;
-    state += cur_dir;
-    if (state < 0) state = stepgen_cycle_length(type) - 1;
-    if (state >= stepgen_cycle_length(type)) state = 0;
-}
-
-/* Base-rate part of one channel: advance the accumulator and emit steps. */
+/* Base-rate part of one channel: ramp, advance the accumulator and emit steps. */
 static void stepgen_pulses_one(struct __comp_state *__comp_inst)
 {
-    long long next;
-    stepgen_timers(__comp_inst);
-    if (enable) {
-        stepgen_ramp(__comp_inst);
-        next = accum + addval;
-        if (stepgen_direction(__comp_inst)) {
-            if ((next >> 32) == (accum >> 32)) accum = next;
-            else if (space_left == 0) {
-                accum = next;
-                stepgen_emit(__comp_inst);
-            }
-        }
-        rawcounts = (hal_s32_t)(accum >> 32);
+    int step_now = 0;
+    stepgen_count_down(&pulse_ns);
+    stepgen_count_down(&dir_ok_ns);
+    if (stepgen_count_down(&reverse_ok_ns)) hold_dds = 0;
+    if (enable && !hold_dds) stepgen_ramp(__comp_inst);
+    if (enable && !hold_dds) {
+        long long before = accum;
+        accum += addval;
+        step_now = ((before ^ accum) >> STEPGEN_PICKOFF) & 1;
+        rawcounts = (hal_s32_t)(accum >> STEPGEN_PICKOFF);
     }
-    if ((personality & 0xff) >= 2) stepgen_phase_out(__comp_inst);
+    if (pulse_ns == 0 && step_ptr) step = 0;
+    if (pulse_ns == 0 && up_ptr) up = down = 0;
+    if (step_now) stepgen_step(__comp_inst);
+    stepgen_outputs(__comp_inst);
 }
 
 /* Publish counts and position of one channel. */
 static void stepgen_capture_one(struct __comp_state *__comp_inst)
 {
     long long a = accum;
-    double scale = position_scale;
-    if (scale < 1e-20 && scale > -1e-20) scale = 1.0;
-    counts = (hal_s32_t)(a >> 32);
-    position_fb = (a - STEPGEN_HALF) * (1.0 / STEPGEN_ONE) / scale;
+    counts = (hal_s32_t)(a >> STEPGEN_PICKOFF);
+    position_fb = (double)(a - STEPGEN_HALF) * ((1.0 / STEPGEN_ONE) / stepgen_scale(__comp_inst));
 }
 
 /* Funct stepgen.update-freq: all channels. */
@@ -365,7 +366,6 @@ static void stepgen_make_pulses(void *arg, long period)
 {
     (void)arg;
     base_ns = period;
-    base_known = 1;
     FOR_ALL_INSTS() stepgen_pulses_one(__comp_inst);
 }
 
@@ -446,6 +446,7 @@ int rtapi_app_main(void)
         pers[i] = stepgen_personality(i);
         if (pers[i] < 0) return -EINVAL;
     }
+    stepgen_timing_init();
     comp_id = hal_init("stepgen");
     if (comp_id < 0) return comp_id;
     for (i = 0; i < n && r == 0; i++) {

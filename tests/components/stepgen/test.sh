@@ -1,8 +1,10 @@
 #!/bin/bash
-# stepgen: load errors, pins of each step type, moves, pulse timing and the phase
-# sequence of every step type (2..15) forward and backward.
+# stepgen: load errors, pins of each step type, moves, pulse timing, the 28-bit
+# accumulator, direction holds, enable, and the phase sequence of every step type
+# (2..15) forward and backward.
 for s in script-noconf script-badctrl script-badtype script-userbad script-userbad2 \
-         script-types script-types2 script-move script-timing script-round; do
+         script-types script-types2 script-move script-timing script-round \
+         script-dds script-reverse script-updown script-enable; do
     echo "== $s"
     "$EMC2_HOME/objects/unit/comptest" < $s
 done
