@@ -38,6 +38,7 @@ std::string point_text(const PlaneAxes &pa, double a, double b)
 void Interp::arc_center_r(const Block &b, double s1, double s2, double e1, double e2, int mode,
                           double &c1, double &c2)
 {
+    INTERP_FRAME();
     double r = b.value('r');
     double tol = s_.units == CANON_UNITS_INCHES ? 0.00005 : 0.00127;
     if (s1 == e1 && s2 == e2) throw InterpError("Current point same as end point of arc");
@@ -57,6 +58,7 @@ void Interp::arc_center_r(const Block &b, double s1, double s2, double e1, doubl
 void Interp::arc_center_ijk(const Block &b, double s1, double s2, double e1, double e2,
                             double &c1, double &c2)
 {
+    INTERP_FRAME();
     PlaneAxes pa = plane_axes(s_.plane);
     if (s_.ijk_absolute) {
         if (!b.word(pa.off1))
@@ -94,6 +96,7 @@ void Interp::arc_center_ijk(const Block &b, double s1, double s2, double e1, dou
 // G2 / G3.
 void Interp::move_arc(const Block &b, int mode)
 {
+    INTERP_FRAME();
     if (s_.plane >= CANON_PLANE_UV)
         throw InterpError("Cannot do an arc in planes G17.1, G18.1, or G19.1");
     if (s_.feed_mode == FEED_UNITS_PER_MINUTE && s_.feed_rate == 0.0)
@@ -134,6 +137,7 @@ void Interp::move_arc(const Block &b, int mode)
 double Interp::arc_length(double s1, double s2, double e1, double e2, double c1, double c2,
                           int rotation, double axial) const
 {
+    INTERP_FRAME();
     double r = std::hypot(s1 - c1, s2 - c2);
     double a0 = std::atan2(s2 - c2, s1 - c1), a1 = std::atan2(e2 - c2, e1 - c1);
     double sweep;

@@ -36,6 +36,7 @@ std::string format_value(double v, int decimals)
 // Expand #n, #<name> and %d/%f/%.Nf format tokens in active-comment text.
 std::string Interp::expand_text(const std::string &text)
 {
+    INTERP_FRAME();
     std::string outs;
     int decimals = -1;
     for (size_t i = 0; i < text.size(); i++) {
@@ -61,6 +62,7 @@ std::string Interp::expand_text(const std::string &text)
 // Expand one parameter reference starting at text[i] == '#'; advances i to its last char.
 std::string Interp::expand_param(const std::string &text, size_t &i, int decimals)
 {
+    INTERP_FRAME();
     if (i + 1 < text.size() && text[i + 1] == '<') {
         size_t end = text.find('>', i);
         if (end == std::string::npos) return "#";
@@ -83,6 +85,7 @@ std::string Interp::expand_param(const std::string &text, size_t &i, int decimal
 // Comment step (3): COMMENT or the active comment's action.
 void Interp::do_comment(Block &b)
 {
+    INTERP_FRAME();
     const std::string &c = b.comment;
     std::string rest;
     if (keyword(c, "msg", rest)) { out().message(rest); return; }

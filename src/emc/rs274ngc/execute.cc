@@ -23,6 +23,7 @@ bool g0_uses_axes(int g)
 // Execute a parsed block.
 InterpStatus Interp::execute_block(Block &b)
 {
+    INTERP_FRAME();
     for (auto &a : b.num_assign) s_.params[a.first] = a.second;
     for (auto &a : b.named_assign) set_named(a.first, a.second);
     if (b.o_kind != O_NONE) return execute_oword(b);
@@ -63,6 +64,7 @@ InterpStatus Interp::execute_block(Block &b)
 // Check axis-word and modal-group combination rules of gcode.md §2 and words without users.
 void Interp::check_block(Block &b)
 {
+    INTERP_FRAME();
     int g0 = b.g_modes[GG_NONMODAL];
     int motion = b.g_modes[GG_MOTION];
     bool axes = has_axis(b);
@@ -91,6 +93,7 @@ void Interp::check_block(Block &b)
 // Letters that need a code to use them.
 void Interp::check_words(Block &b)
 {
+    INTERP_FRAME();
     int motion = b.g_modes[GG_MOTION] != -1 ? b.g_modes[GG_MOTION] : s_.motion_mode;
     int g0 = b.g_modes[GG_NONMODAL];
     int comp = b.g_modes[GG_COMP];
@@ -108,7 +111,7 @@ void Interp::check_words(Block &b)
     if (b.word('r') && !r_user) throw InterpError("R word with no g code that uses it");
     if (b.word('r') && b.g_modes[GG_PATH] == 640 && b.m_modes[MG_SPINDLE] == 19)
         throw InterpError("R word is ambiguous on a line with both G64 and M19 - use separate lines");
-    if (b.word('l') && !(g0 == 100 || cycle || motion == 760 || comp == 411 || comp == 421 ||
+    if (b.word('l') && !(g0 == 100 || cycle || motion == 760 || motion == 52 || comp == 411 || comp == 421 ||
                          b.m_modes[MG_IO] == 66 || lathe || b.m98))
         throw InterpError("L word with no G10, G76, cycle or M66 to use it");
     if (g0 == 40 && (motion == 20 || motion == 30) && b.g_modes[GG_MOTION] != -1)
@@ -118,6 +121,7 @@ void Interp::check_words(Block &b)
 // G96/G97 (step 4).
 void Interp::do_spindle_mode(Block &b)
 {
+    INTERP_FRAME();
     int g = b.g_modes[GG_SPINDLE];
     if (g == -1) return;
     int sp = 0;
@@ -135,6 +139,7 @@ void Interp::do_spindle_mode(Block &b)
 // G93/G94/G95 (step 5).
 void Interp::do_feed_mode(Block &b)
 {
+    INTERP_FRAME();
     int g = b.g_modes[GG_FEED];
     if (g == -1) return;
     if (g == 930) {
@@ -155,6 +160,7 @@ void Interp::do_feed_mode(Block &b)
 // F word (step 6); in G93 F is used per move.
 void Interp::do_feed_rate(Block &b)
 {
+    INTERP_FRAME();
     if (!b.word('f')) return;
     s_.feed_rate = b.value('f');
     if (s_.feed_mode != FEED_INVERSE_TIME) out().set_feed_rate(s_.feed_rate);
@@ -163,6 +169,7 @@ void Interp::do_feed_rate(Block &b)
 // S word (step 7).
 void Interp::do_speed(Block &b)
 {
+    INTERP_FRAME();
     if (!b.word('s')) return;
     s_.speed[0] = b.value('s');
     out().set_spindle_speed(0, s_.speed[0]);
@@ -171,6 +178,7 @@ void Interp::do_speed(Block &b)
 // G4 dwell (step 15).
 void Interp::do_dwell(Block &b)
 {
+    INTERP_FRAME();
     if (b.g_modes[GG_NONMODAL] != 40) return;
     if (!b.word('p') || b.value('p') < 0) throw InterpError("Dwell time missing with g4");
     out().dwell(b.value('p'));

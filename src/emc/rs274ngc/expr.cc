@@ -103,6 +103,7 @@ static bool fast_decimal(const char *p, const char *end, double &v)
 // Read a number: optional sign, digits and at most one point, at least one digit.
 double Interp::read_number(const std::string &t, size_t &pos)
 {
+    INTERP_FRAME();
     size_t start = pos;
     if (pos < t.size() && (t[pos] == '+' || t[pos] == '-')) pos++;
     bool digit = false;
@@ -127,6 +128,7 @@ double Interp::read_number(const std::string &t, size_t &pos)
 // Read a real value: [expr], #param, unary function, signed value or number.
 double Interp::read_real_value(const std::string &t, size_t &pos)
 {
+    INTERP_FRAME();
     if (pos >= t.size()) throw InterpError("No characters found in reading real value");
     char c = t[pos];
     char next = pos + 1 < t.size() ? t[pos + 1] : 0;
@@ -144,6 +146,7 @@ double Interp::read_real_value(const std::string &t, size_t &pos)
 // Read a function call such as sin[...], atan[..]/[..] or exists[#<name>].
 double Interp::read_unary(const std::string &t, size_t &pos)
 {
+    INTERP_FRAME();
     size_t start = pos;
     while (pos < t.size() && t[pos] >= 'a' && t[pos] <= 'z') pos++;
     std::string name = t.substr(start, pos - start);
@@ -178,6 +181,7 @@ double Interp::read_unary(const std::string &t, size_t &pos)
 // Read a binary operator at pos (symbols or lower-case words); ']' gives OP_END.
 BinOp Interp::read_operator(const std::string &t, size_t &pos)
 {
+    INTERP_FRAME();
     if (pos >= t.size()) throw InterpError("Unclosed expression");
     char c = t[pos];
     switch (c) {
@@ -208,6 +212,7 @@ BinOp Interp::read_operator(const std::string &t, size_t &pos)
 // Apply a binary operator.
 double Interp::eval_binary(double a, BinOp op, double b)
 {
+    INTERP_FRAME();
     switch (op) {
     case OP_POW:
         if (a < 0.0 && std::floor(b) != b)
@@ -239,6 +244,7 @@ double Interp::eval_binary(double a, BinOp op, double b)
 // Evaluate "[ ... ]" starting at the '[' with left-associative precedence levels.
 double Interp::eval_expression(const std::string &t, size_t &pos)
 {
+    INTERP_FRAME();
     pos++;
     double values[16];
     BinOp ops[16];

@@ -39,6 +39,7 @@ std::string fanuc_name(const std::string &line)
 // An "O<n>" line met in normal flow: a program number at the top, else a subprogram to skip.
 InterpStatus Interp::fanuc_label(Block &b)
 {
+    INTERP_FRAME();
     CallFrame &f = calls_.back();
     if (f.fanuc) return INTERP_OK;
     for (size_t i = 0; i + 1 < f.pos; i++) {
@@ -56,6 +57,7 @@ InterpStatus Interp::fanuc_label(Block &b)
 // While skipping a Fanuc subprogram body: true at its M99 line.
 bool Interp::fanuc_skip_done(const std::string &line)
 {
+    INTERP_FRAME();
     if (!has_m99(line)) return false;
     skipping_ = false;
     skip_fanuc_ = false;
@@ -65,6 +67,7 @@ bool Interp::fanuc_skip_done(const std::string &line)
 // M98 P<n> [L<count>]: call a Fanuc subprogram of the main file.
 void Interp::fanuc_call(Block &b)
 {
+    INTERP_FRAME();
     if (s_.settings.disable_fanuc_style_sub) throw InterpError("Unknown m code used: M98");
     if (!b.word('p')) throw InterpError("Found 'm98' code with no P-word");
     std::string name = std::to_string(clamp_int(b.value('p')));
@@ -88,6 +91,7 @@ void Interp::fanuc_call(Block &b)
 // M99 inside a Fanuc subprogram: loop for L or return; false in the main program.
 bool Interp::fanuc_return()
 {
+    INTERP_FRAME();
     CallFrame &f = calls_.back();
     if (!f.fanuc) return false;
     count_iteration(f.fanuc_iterations, f.sub_name);

@@ -47,6 +47,7 @@ Canon &Interp::out()
 // Initialise the state from the canon and the parameter file; emits the init calls.
 void Interp::init()
 {
+    INTERP_FRAME();
     Canon &c = real_out_;
     c.init_canon();
     s_.machine_units = c.get_external_length_units() > 0.5 ? CANON_UNITS_MM : CANON_UNITS_INCHES;
@@ -88,6 +89,7 @@ void Interp::init()
 // Load a file into memory (nullptr when unreadable).
 std::shared_ptr<SourceFile> Interp::load_file(const std::string &path)
 {
+    INTERP_FRAME();
     FILE *in = fopen(path.c_str(), "rb");
     if (!in) return nullptr;
     std::string text;
@@ -101,6 +103,7 @@ std::shared_ptr<SourceFile> Interp::load_file(const std::string &path)
 // Split program text into a SourceFile.
 std::shared_ptr<SourceFile> Interp::make_source(const std::string &path, const std::string &text)
 {
+    INTERP_FRAME();
     auto f = std::make_shared<SourceFile>();
     f->path = path;
     f->lines.reserve((size_t)std::count(text.begin(), text.end(), '\n') + 1);
@@ -125,6 +128,7 @@ std::shared_ptr<SourceFile> Interp::make_source(const std::string &path, const s
 // Open the main program.
 void Interp::open(const std::string &path)
 {
+    INTERP_FRAME();
     auto f = load_file(path);
     if (!f) throw InterpError("Unable to open file <" + path + ">");
     open_source(f);
@@ -133,16 +137,21 @@ void Interp::open(const std::string &path)
 // Open program text held in memory (fuzzing, previews).
 void Interp::open_text(const std::string &name, const std::string &text)
 {
+    INTERP_FRAME();
     open_source(make_source(name, text));
 }
 
 // Make f the main program.
 void Interp::open_source(const std::shared_ptr<SourceFile> &f)
 {
+    INTERP_FRAME();
     const std::string &path = f->path;
     calls_.resize(1);
     calls_[0] = CallFrame();
     calls_[0].file = f;
+    total_iterations_ = 0;
+    spline_continues_ = false;
+    nurbs_open_ = false;
     s_.filename = path;
     file_open_ = true;
     skipping_ = false;
@@ -153,6 +162,7 @@ void Interp::open_source(const std::shared_ptr<SourceFile> &f)
 // Close the program file (ON_RESET unless lazy close).
 void Interp::close()
 {
+    INTERP_FRAME();
     if (comp_) comp_->reset();
     file_open_ = false;
     s_.line_text.clear();
@@ -162,6 +172,7 @@ void Interp::close()
 // Interpreter exit: save parameters and reset the canon.
 void Interp::exit()
 {
+    INTERP_FRAME();
     write_var_file();
     s_.line_text.clear();
     real_out_.on_reset();
@@ -170,6 +181,7 @@ void Interp::exit()
 // Read and execute the next line of the open program.
 InterpStatus Interp::execute_next()
 {
+    INTERP_FRAME();
     CallFrame &f = calls_.back();
     if (!f.file || f.pos >= f.file->lines.size()) {
         s_.line_text.clear();
@@ -197,14 +209,19 @@ InterpStatus Interp::execute_next()
 // Execute one MDI line.
 InterpStatus Interp::execute_line(const std::string &text)
 {
+    INTERP_FRAME();
+    if (calls_.size() <= 1 && (calls_.empty() || calls_[0].flow.empty())) total_iterations_ = 0;
     return run_line(rstrip(text));
 }
 
 // Parse and execute one line, turning errors into INTERP_ERROR.
 InterpStatus Interp::run_line(const std::string &raw)
 {
+    INTERP_FRAME();
     s_.line_text = raw;
     eof_error_ = false;
+    error_stack_.clear();
+    interp_error_unwinding = false;
     try {
         if (line_budget_ >= 0 && line_budget_-- == 0) throw InterpError("Line budget exhausted");
         if (skipping_ && skip_fanuc_) {
@@ -223,6 +240,7 @@ InterpStatus Interp::run_line(const std::string &raw)
         if (b.block_delete && block_delete_) return INTERP_OK;
         return execute_block(b);
     } catch (const InterpError &e) {
+        interp_error_unwinding = false;
         error_ = e.what();
         error_line_ = raw;
         unwind_after_error();
@@ -233,16 +251,33 @@ InterpStatus Interp::run_line(const std::string &raw)
 // After an error: drop subroutine levels, skips and held comp moves.
 void Interp::unwind_after_error()
 {
+    INTERP_FRAME();
     while (calls_.size() > 1) pop_call();
     skipping_ = false;
+    nurbs_open_ = false;
     if (comp_) comp_->reset();
     s_.comp_side = CANON_SIDE_OFF;
     s_.comp_code = 400;
 }
 
+// A ':'-separated directory list (at most 10 entries, as SUBROUTINE_PATH allows).
+static std::vector<std::string> split_path(const std::string &list)
+{
+    std::vector<std::string> dirs;
+    size_t start = 0;
+    while (start <= list.size() && dirs.size() < 10) {
+        size_t colon = list.find(':', start);
+        if (colon == std::string::npos) colon = list.size();
+        dirs.push_back(list.substr(start, colon - start));
+        start = colon + 1;
+    }
+    return dirs;
+}
+
 // Read the [RS274NGC] settings of an INI file.
 bool Interp::load_ini(const std::string &path)
 {
+    INTERP_FRAME();
     IniFile ini;
     ini.SetQuiet(true);
     if (!ini.Open(path)) return false;
@@ -268,6 +303,7 @@ bool Interp::load_ini(const std::string &path)
     st.oword_warnonly = flag("OWORD_WARNONLY", "RS274NGC", false);
     st.disable_fanuc_style_sub = flag("DISABLE_FANUC_STYLE_SUB", "RS274NGC", false);
     st.ini_vars = flag("INI_VARS", "RS274NGC", true);
+    st.hal_pin_vars = flag("HAL_PIN_VARS", "RS274NGC", true);
     st.tool_change_quill_up = flag("TOOL_CHANGE_QUILL_UP", "EMCIO", false);
     st.tool_change_at_g30 = flag("TOOL_CHANGE_AT_G30", "EMCIO", false);
     st.tool_change_with_spindle_on = flag("TOOL_CHANGE_WITH_SPINDLE_ON", "EMCIO", false);
@@ -276,15 +312,8 @@ bool Interp::load_ini(const std::string &path)
     st.metric_machine = !units ? -1 : *units == "inch" ? 0 : 1;
     if (auto v = ini.Find("PROGRAM_PREFIX", "DISPLAY")) st.program_prefix = IniFile::TildeExpand(*v);
     if (auto v = ini.Find("WIZARD_ROOT", "WIZARD")) st.wizard_root = *v;
-    if (auto v = ini.Find("SUBROUTINE_PATH", "RS274NGC")) {
-        size_t start = 0;
-        while (start <= v->size() && st.subroutine_path.size() < 10) {
-            size_t colon = v->find(':', start);
-            if (colon == std::string::npos) colon = v->size();
-            st.subroutine_path.push_back(v->substr(start, colon - start));
-            start = colon + 1;
-        }
-    }
+    if (auto v = ini.Find("SUBROUTINE_PATH", "RS274NGC")) st.subroutine_path = split_path(*v);
+    if (auto v = ini.Find("USER_M_PATH", "RS274NGC")) st.user_m_path = split_path(*v);
     if (auto v = ini.Find("PARAMETER_FILE", "RS274NGC")) var_file_ = *v;
     load_remaps(ini.FindAll("REMAP", "RS274NGC"));
     return true;

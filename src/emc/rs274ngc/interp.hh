@@ -14,6 +14,8 @@
 #include "interp_base.hh"
 #include "interp_hooks.hh"
 #include "interp_state.hh"
+#include "spline_geom.hh"
+#include "stack_frame.hh"
 
 // Binary operators of expressions (OP_END = closing bracket).
 enum BinOp { OP_END, OP_POW, OP_MUL, OP_DIV, OP_MOD, OP_ADD, OP_SUB, OP_EQ, OP_NE, OP_GT, OP_GE,
@@ -101,6 +103,8 @@ public:
     const std::string &error_text() const override { return error_; }
     // source line of the last error
     const std::string &error_line() const override { return error_line_; }
+    // functions the last error unwound through, innermost first
+    const std::vector<std::string> &error_stack() const override { return error_stack_; }
     // current line text (for canon markers)
     const std::string &line_text() const override { return s_.line_text; }
     // block delete switch (lines starting with '/' are skipped when on)
@@ -109,6 +113,12 @@ public:
     bool at_end_of_file() const override { return eof_error_; }
     // stop with an error after this many executed lines (-1 = unlimited; fuzzing)
     void set_line_budget(long lines) { line_budget_ = lines; }
+    // where #<_hal[name]> values come from
+    void set_hal_reader(HalReader fn) override { hal_reader_ = std::move(fn); }
+    // what runs M100-M199
+    void set_user_m_handler(UserMHandler fn) override { user_m_ = std::move(fn); }
+    // executable M<m> from PROGRAM_PREFIX, then USER_M_PATH; "" when none
+    std::string find_user_m(int m) const;
     // mark the process as task (#<_task> = 1)
     void set_task(bool t) override { task_ = t; }
     // ProfileSource: evaluated blocks of a subroutine
@@ -175,6 +185,7 @@ private:
     void fanuc_call(Block &b);
     bool fanuc_return();
     std::string flow_error(const std::string &what, const Block &b) const;
+    void flow_fail(const std::string &what, const Block &b);
 
     // execution steps (execute.cc, modal.cc, mcodes.cc, comments.cc, tools.cc)
     void check_block(Block &b);
@@ -228,7 +239,13 @@ private:
     void store_home(int code);
     void move_cycle(Block &b);
     void apply_inverse_time(double length, const Block &b);
-    CanonPose canon_pose(const Pose &p) const;
+
+    // splines (spline.cc)
+    void check_spline(const Block &b);
+    spline::Cubic spline_curve(const Block &b, int mode, const Pose &end);
+    void move_spline(const Block &b, int mode);
+    void nurbs_point(const Block &b);
+    void nurbs_close(const Block &b);
     Pose machine_to_program_pose(const Pose &m) const;
     Pose program_to_machine_pose(const Pose &p) const;
 
@@ -256,6 +273,7 @@ private:
     void read_var_file();
     void write_var_file();
     bool predefined(const std::string &name, double &v);
+    bool hal_value(const std::string &name, double &v);
 
     InterpState s_;
     Canon &real_out_;
@@ -267,6 +285,7 @@ private:
     std::map<std::string, double> globals_;
     std::map<std::string, double> ini_cache_;
     std::string error_, error_line_;
+    mutable std::vector<std::string> error_stack_;   // filled by INTERP_FRAME() while unwinding
     bool skipping_ = false;
     std::string skip_name_;
     std::vector<OKind> skip_kinds_;
@@ -278,6 +297,14 @@ private:
     bool eof_error_ = false;
     double value_ = 0, value_returned_ = 0;
     long line_budget_ = -1;
+    HalReader hal_reader_;
+    UserMHandler user_m_;
+    bool spline_continues_ = false;  // the last motion was a G5: the next may omit I J
+    double spline_cp2_[2] = {};      // its second control point (absolute X Y)
+    bool nurbs_open_ = false;        // inside a G5.2 ... G5.3 block
+    unsigned nurbs_order_ = 0;
+    std::vector<CanonNurbsPoint> nurbs_;
+    long total_iterations_ = 0;    // loop passes since the program (or MDI command) started
     std::string ini_path_;
     std::map<int, RemapDef> g_remaps_, m_remaps_;
     int remap_level_ = 0;

@@ -2,6 +2,7 @@
 #ifndef OPENEMC_RS274NGC_INTERP_BASE_HH
 #define OPENEMC_RS274NGC_INTERP_BASE_HH
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -10,6 +11,11 @@
 // Result of executing one line.
 enum InterpStatus { INTERP_OK = 0, INTERP_EXIT = 1, INTERP_EXECUTE_FINISH = 2,
                     INTERP_ENDFILE = 3, INTERP_ERROR = 4 };
+
+// Reads a HAL pin, parameter or signal for #<_hal[name]>; false when there is no such item.
+using HalReader = std::function<bool(const std::string &name, double &value)>;
+// Runs user M-code M<m> (100..199) with its P and Q words; false when no program M<m> exists.
+using UserMHandler = std::function<bool(int m, double p, double q)>;
 
 // What a program driver (rs274, task) needs from an interpreter.
 class InterpBase {
@@ -25,6 +31,10 @@ public:
     virtual void set_task(bool task) = 0;
     // block delete switch
     virtual void set_block_delete(bool on) = 0;
+    // source of #<_hal[...]> values (none in rs274: they are not defined)
+    virtual void set_hal_reader(HalReader) {}
+    // runner of M100-M199 (none in rs274: "Unknown m code used")
+    virtual void set_user_m_handler(UserMHandler) {}
     // initialise (throws InterpError-like std::runtime_error on failure)
     virtual void init() = 0;
     // open a program file (throws on failure)
@@ -40,6 +50,12 @@ public:
     // last error text and its source line
     virtual const std::string &error_text() const = 0;
     virtual const std::string &error_line() const = 0;
+    // functions the last error unwound through, innermost first (rs274 -s); may be empty
+    virtual const std::vector<std::string> &error_stack() const
+    {
+        static const std::vector<std::string> none;
+        return none;
+    }
     // true when the last error was the end of the file
     virtual bool at_end_of_file() const = 0;
     // text of the line being executed (canon N markers)

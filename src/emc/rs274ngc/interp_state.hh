@@ -16,10 +16,16 @@ enum AxisIndex { AX_X = 0, AX_Y, AX_Z, AX_A, AX_B, AX_C, AX_U, AX_V, AX_W, AX_CO
 // Nine axis values X Y Z A B C U V W.
 using Pose = std::array<double, AX_COUNT>;
 
+// True from the creation of an InterpError until the interpreter catches it (rs274 -s stack).
+inline bool interp_error_unwinding = false;
+
 // An interpreter error; what() is the exact user-visible text (gcode.md).
 class InterpError : public std::runtime_error {
 public:
-    explicit InterpError(const std::string &msg) : std::runtime_error(msg) {}
+    explicit InterpError(const std::string &msg) : std::runtime_error(msg)
+    {
+        interp_error_unwinding = true;
+    }
 };
 
 // Round a user-supplied value to an int, clamped to +-1e9 (NaN -> 0), so casts never overflow.
@@ -29,6 +35,16 @@ inline int clamp_int(double v)
     if (v > 1e9) return 1000000000;
     if (v < -1e9) return -1000000000;
     return (int)(v < 0 ? v - 0.5 : v + 0.5);
+}
+
+// The canon form of a nine-axis pose (X Y Z A B C U V W), used by every emitter of moves.
+inline CanonPose to_canon_pose(const Pose &p)
+{
+    CanonPose c;
+    c.x = p[AX_X]; c.y = p[AX_Y]; c.z = p[AX_Z];
+    c.a = p[AX_A]; c.b = p[AX_B]; c.c = p[AX_C];
+    c.u = p[AX_U]; c.v = p[AX_V]; c.w = p[AX_W];
+    return c;
 }
 
 // Feed mode (group 5).
@@ -57,6 +73,7 @@ struct InterpSettings {
     bool oword_warnonly = false;
     bool disable_fanuc_style_sub = false;
     bool ini_vars = true;
+    bool hal_pin_vars = true;
     bool tool_change_quill_up = false;
     bool tool_change_at_g30 = false;
     bool tool_change_with_spindle_on = false;
@@ -65,6 +82,7 @@ struct InterpSettings {
     int metric_machine = -1;          // _metric_machine
     std::string program_prefix;
     std::vector<std::string> subroutine_path;
+    std::vector<std::string> user_m_path;     // [RS274NGC]USER_M_PATH dirs (M100-M199)
     std::string wizard_root;
     std::string ini_file;
 };

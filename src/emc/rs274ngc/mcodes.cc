@@ -1,11 +1,14 @@
 // mcodes.cc: M codes: I/O, spindle, coolant, overrides, user codes, program stops and the M2 reset.
 #include <cmath>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include "interp.hh"
 
 // M62-M68 and M66 (step 9).
 void Interp::do_io(Block &b)
 {
+    INTERP_FRAME();
     int m = b.m_modes[MG_IO];
     if (m == -1) return;
     if (s_.comp_side != CANON_SIDE_OFF)
@@ -32,6 +35,7 @@ void Interp::do_io(Block &b)
 // M66: wait for / read an input into #5399.
 void Interp::do_wait_input(Block &b)
 {
+    INTERP_FRAME();
     if (b.word('p') && b.word('e'))
         throw InterpError("Invalid to select both a digital and an analog input with M66");
     if (!b.word('p') && !b.word('e'))
@@ -57,6 +61,7 @@ void Interp::do_wait_input(Block &b)
 // M3/M4/M5/M19 and M70-M73 (step 11).
 void Interp::do_spindle(Block &b)
 {
+    INTERP_FRAME();
     int m = b.m_modes[MG_SPINDLE];
     if (m == -1) return;
     int sp = b.has_dollar ? clamp_int(b.dollar) : 0;
@@ -94,6 +99,7 @@ void Interp::do_spindle(Block &b)
 // M7/M8/M9 (step 12).
 void Interp::do_coolant(Block &b)
 {
+    INTERP_FRAME();
     int m = b.m_modes[MG_COOLANT];
     if (m == 7) { out().mist_on(); s_.mist = true; }
     if (m == 8) { out().flood_on(); s_.flood = true; }
@@ -107,6 +113,7 @@ void Interp::do_coolant(Block &b)
 // M48-M53 (step 13).
 void Interp::do_overrides(Block &b)
 {
+    INTERP_FRAME();
     int m = b.m_modes[MG_OVERRIDE];
     if (m == -1) return;
     if (s_.comp_side != CANON_SIDE_OFF)
@@ -131,16 +138,20 @@ void Interp::do_overrides(Block &b)
     }
 }
 
-// M100-M199 (step 14): never available in this interpreter build.
+// M100-M199 (step 14): run by the user-M handler; without one (rs274) they are unknown.
 void Interp::do_user_m(Block &b)
 {
+    INTERP_FRAME();
     int m = b.m_modes[MG_USER];
-    if (m != -1) throw InterpError("Unknown m code used: M" + std::to_string(m));
+    if (m == -1) return;
+    double p = b.word('p') ? b.value('p') : 0.0, q = b.word('q') ? b.value('q') : 0.0;
+    if (!user_m_ || !user_m_(m, p, q)) throw InterpError("Unknown m code used: M" + std::to_string(m));
 }
 
 // M0 M1 M2 M30 M60 M99 (step 29).
 InterpStatus Interp::do_stop(Block &b)
 {
+    INTERP_FRAME();
     int m = b.m_modes[MG_STOP];
     if (m == -1) return INTERP_OK;
     if (m == 0) out().program_stop();
@@ -155,6 +166,7 @@ InterpStatus Interp::do_stop(Block &b)
 // Program end resets (gcode.md §5 "M2/M30 resets").
 void Interp::m2_reset(int code)
 {
+    INTERP_FRAME();
     if (comp_) comp_->flush();
     if (!s_.settings.disable_auto_g54) {
         set_origin_index(1);
@@ -198,4 +210,21 @@ void Interp::m2_reset(int code)
             closing = closing || f.file->lines[i].find('%') != std::string::npos;
         if (!closing) out().comment("interpreter: percent sign missing from end of file");
     }
+}
+
+// The program a user M-code runs: the first executable regular file "M<m>" in PROGRAM_PREFIX and
+// then the USER_M_PATH directories (for the driver's user-M handler; rs274 installs none).
+std::string Interp::find_user_m(int m) const
+{
+    INTERP_FRAME();
+    std::vector<std::string> dirs;
+    if (!s_.settings.program_prefix.empty()) dirs.push_back(s_.settings.program_prefix);
+    dirs.insert(dirs.end(), s_.settings.user_m_path.begin(), s_.settings.user_m_path.end());
+    for (const std::string &d : dirs) {
+        std::string path = (d.empty() ? std::string(".") : d) + "/M" + std::to_string(m);
+        struct stat st;
+        if (stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode) && access(path.c_str(), X_OK) == 0)
+            return path;
+    }
+    return "";
 }

@@ -6,6 +6,7 @@
 // G17..G19.1 (step 16).
 void Interp::do_plane(Block &b)
 {
+    INTERP_FRAME();
     int g = b.g_modes[GG_PLANE];
     if (g == -1) return;
     if (s_.comp_side != CANON_SIDE_OFF)
@@ -21,6 +22,7 @@ void Interp::do_plane(Block &b)
 // G20/G21 (step 17): convert the position and offsets, not the stored parameters.
 void Interp::do_units(Block &b)
 {
+    INTERP_FRAME();
     int g = b.g_modes[GG_UNITS];
     if (g == -1) return;
     CanonUnits to = g == 200 ? CANON_UNITS_INCHES : CANON_UNITS_MM;
@@ -31,6 +33,7 @@ void Interp::do_units(Block &b)
 // Switch program units, scaling every length the state holds.
 void Interp::convert_units(CanonUnits to)
 {
+    INTERP_FRAME();
     if (to == s_.units) return;
     double k = to == CANON_UNITS_MM ? 25.4 : 1.0 / 25.4;
     static const int linear[] = {AX_X, AX_Y, AX_Z, AX_U, AX_V, AX_W};
@@ -48,6 +51,7 @@ void Interp::convert_units(CanonUnits to)
 // G7/G8 (step 18).
 void Interp::do_lathe_mode(Block &b)
 {
+    INTERP_FRAME();
     int g = b.g_modes[GG_LATHE];
     if (g == -1) return;
     bool dia = g == 70;
@@ -60,6 +64,7 @@ void Interp::do_lathe_mode(Block &b)
 // G40/G41/G42/G41.1/G42.1 (step 19).
 void Interp::do_comp(Block &b)
 {
+    INTERP_FRAME();
     int g = b.g_modes[GG_COMP];
     if (g == -1) return;
     if (g == 400) {
@@ -105,6 +110,7 @@ void Interp::do_comp(Block &b)
 // G43/G43.1/G43.2/G49 (step 20).
 void Interp::do_tool_length(Block &b)
 {
+    INTERP_FRAME();
     int g = b.g_modes[GG_TOOL_LENGTH];
     if (g == -1) return;
     if (s_.comp_side != CANON_SIDE_OFF)
@@ -147,9 +153,10 @@ void Interp::do_tool_length(Block &b)
 // Make tlo the active tool length offset: adjust the position, emit, update #5081-#5089.
 void Interp::apply_tlo(const Pose &tlo)
 {
+    INTERP_FRAME();
     for (int i = 0; i < AX_COUNT; i++) s_.current[i] += s_.tool_offset[i] - tlo[i];
     s_.tool_offset = tlo;
-    out().use_tool_length_offset(canon_pose(tlo));
+    out().use_tool_length_offset(to_canon_pose(tlo));
     double k = 1.0 / s_.machine_to_program();
     for (int i = 0; i < AX_COUNT; i++)
         s_.params[5081 + i] = (i >= AX_A && i <= AX_C) ? tlo[i] : tlo[i] * k;
@@ -158,6 +165,7 @@ void Interp::apply_tlo(const Pose &tlo)
 // G54..G59.3 (step 21).
 void Interp::do_coord_system(Block &b)
 {
+    INTERP_FRAME();
     int g = b.g_modes[GG_COORD];
     if (g == -1) return;
     if (s_.comp_side != CANON_SIDE_OFF)
@@ -176,6 +184,7 @@ void Interp::do_coord_system(Block &b)
 // G61/G61.1/G64 (step 22).
 void Interp::do_path_control(Block &b)
 {
+    INTERP_FRAME();
     int g = b.g_modes[GG_PATH];
     if (g == -1) return;
     if (s_.comp_side != CANON_SIDE_OFF)
@@ -204,6 +213,7 @@ void Interp::do_path_control(Block &b)
 // G90/G91 and G90.1/G91.1 (steps 23, 24).
 void Interp::do_distance(Block &b)
 {
+    INTERP_FRAME();
     int g = b.g_modes[GG_DISTANCE];
     if (g != -1) {
         bool inc = g == 910;
@@ -225,6 +235,7 @@ void Interp::do_distance(Block &b)
 // G98/G99 (step 25).
 void Interp::do_retract(Block &b)
 {
+    INTERP_FRAME();
     int g = b.g_modes[GG_RETRACT];
     if (g == -1) return;
     if (s_.comp_side != CANON_SIDE_OFF)

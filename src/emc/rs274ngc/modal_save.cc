@@ -4,6 +4,7 @@
 // Save the modal state in the current call frame; autorestore for M73.
 void Interp::modal_save(bool autorestore)
 {
+    INTERP_FRAME();
     SavedModal &m = calls_.back().saved;
     m.valid = true;
     m.units = s_.units;
@@ -35,6 +36,7 @@ void Interp::modal_save(bool autorestore)
 // Re-issue the settings that differ from a saved state.
 void Interp::modal_restore(const SavedModal &m)
 {
+    INTERP_FRAME();
     Block u;
     if (m.units != s_.units) u.g_modes[GG_UNITS] = m.units == CANON_UNITS_MM ? 210 : 200;
     do_units(u);
@@ -81,6 +83,7 @@ void Interp::modal_restore(const SavedModal &m)
 // Coolant part of M72 (only what changed): M9 and mist first, flood last.
 void Interp::restore_coolant(const SavedModal &m, bool first)
 {
+    INTERP_FRAME();
     if (!first) {
         if (m.flood && !s_.flood) { out().flood_on(); s_.flood = true; }
         return;

@@ -21,10 +21,12 @@ bool any_axis(const Block &b)
 // Motion step (28); returns true when the block must end with execute-finish.
 bool Interp::do_motion(Block &b)
 {
+    INTERP_FRAME();
     int g0 = b.g_modes[GG_NONMODAL];
     if (g0 == 280 || g0 == 300) { move_home(b, g0); return false; }
     if (g0 == 281 || g0 == 301) { store_home(g0); return false; }
     if (g0 == 100 || g0 == 520 || g0 == 920) return false;
+    if (g0 == 53) { nurbs_close(b); return false; }
     int explicit_motion = b.motion();
     int tl = b.g_modes[GG_TOOL_LENGTH];
     if (explicit_motion == -1 && (tl == 431 || tl == 432)) return false;
@@ -32,6 +34,7 @@ bool Interp::do_motion(Block &b)
     int m = s_.motion_mode;
     if (explicit_motion == -1 && !any_axis(b)) return false;
     if (g_remaps_.count(m)) return false;
+    if (nurbs_open_ && m != 52) throw InterpError("Must close the G5.2 block with G5.3 first");
     if (m == 800) {
         out().comment("interpreter: motion mode set to none");
         s_.cycle_last = -1;
@@ -42,16 +45,20 @@ bool Interp::do_motion(Block &b)
     if (cycle) { move_cycle(b); return false; }
     s_.cycle_last = -1;
     s_.cycle_il_valid = false;
+    if (m != 50 && m != 51) spline_continues_ = false;
     if (m == 0 || m == 10) { move_straight(b, m); return false; }
     if (m == 20 || m == 30) { move_arc(b, m); return false; }
     if (m == 330 || m == 331) { move_g33(b, m == 331); return false; }
     if (m >= 382 && m <= 385) { move_probe(b); return true; }
-    throw InterpError("G5, G5.1 splines not supported");
+    if (m == 52) { nurbs_point(b); return false; }
+    move_spline(b, m);
+    return false;
 }
 
 // End point of a move in program coordinates (G90/G91, G53, G7, polar words).
 Pose Interp::find_end(const Block &b)
 {
+    INTERP_FRAME();
     Pose end = s_.current;
     bool g53 = b.g_modes[GG_NONMODAL] == 530;
     if (g53) end = program_to_machine_pose(s_.current);
@@ -69,6 +76,7 @@ Pose Interp::find_end(const Block &b)
 // Apply @ (radius) and ^ (angle) words in the XY plane.
 void Interp::polar_end(const Block &b, Pose &end)
 {
+    INTERP_FRAME();
     if (s_.plane != CANON_PLANE_XY) throw InterpError("Polar coordinates only in the XY plane");
     double x = s_.current[AX_X], y = s_.current[AX_Y];
     double r = std::hypot(x, y);
@@ -90,6 +98,7 @@ void Interp::polar_end(const Block &b, Pose &end)
 // In G93 emit SET_FEED_RATE(length * F) before a move.
 void Interp::apply_inverse_time(double length, const Block &b)
 {
+    INTERP_FRAME();
     if (s_.feed_mode != FEED_INVERSE_TIME) return;
     if (!b.word('f')) throw InterpError(s_.motion_mode == 10
                                             ? "F word missing with inverse time g1 move"
@@ -100,6 +109,7 @@ void Interp::apply_inverse_time(double length, const Block &b)
 // Length of a straight move for inverse time: XYZ, else UVW, else ABC.
 double Interp::straight_length(const Pose &a, const Pose &e) const
 {
+    INTERP_FRAME();
     double l = std::sqrt(std::pow(e[0] - a[0], 2) + std::pow(e[1] - a[1], 2) +
                          std::pow(e[2] - a[2], 2));
     if (l == 0.0)
@@ -114,16 +124,17 @@ double Interp::straight_length(const Pose &a, const Pose &e) const
 // G0 / G1.
 void Interp::move_straight(const Block &b, int mode)
 {
+    INTERP_FRAME();
     Pose end = find_end(b);
     int line = s_.sequence_number;
     if (mode == 0) {
-        out().straight_traverse(line, canon_pose(end));
+        out().straight_traverse(line, to_canon_pose(end));
     } else {
         if (s_.feed_mode == FEED_INVERSE_TIME)
             apply_inverse_time(straight_length(s_.current, end), b);
         else if (s_.feed_rate == 0.0)
             throw InterpError("Cannot do g1 with zero feed rate");
-        out().straight_feed(line, canon_pose(end));
+        out().straight_feed(line, to_canon_pose(end));
     }
     s_.current = end;
 }
@@ -131,10 +142,11 @@ void Interp::move_straight(const Block &b, int mode)
 // G28 / G30: rapid to the intermediate point, then to the stored home position.
 void Interp::move_home(const Block &b, int code)
 {
+    INTERP_FRAME();
     if (s_.comp_side != CANON_SIDE_OFF)
         throw InterpError("Cannot use G28 or G30 with cutter radius compensation");
     Pose mid = find_end(b);
-    out().straight_traverse(s_.sequence_number, canon_pose(mid));
+    out().straight_traverse(s_.sequence_number, to_canon_pose(mid));
     s_.current = mid;
     int base = code == 280 ? PARAM_G28_HOME : PARAM_G30_HOME;
     double k = s_.machine_to_program();
@@ -145,13 +157,14 @@ void Interp::move_home(const Block &b, int code)
         m[i] = s_.params[base + i] * ((i >= AX_A && i <= AX_C) ? 1.0 : k);
     }
     Pose end = machine_to_program_pose(m);
-    out().straight_traverse(s_.sequence_number, canon_pose(end));
+    out().straight_traverse(s_.sequence_number, to_canon_pose(end));
     s_.current = end;
 }
 
 // G28.1 / G30.1: store the current machine position (machine units).
 void Interp::store_home(int code)
 {
+    INTERP_FRAME();
     int base = code == 281 ? PARAM_G28_HOME : PARAM_G30_HOME;
     double k = s_.machine_to_program();
     Pose m = program_to_machine_pose(s_.current);
@@ -162,6 +175,7 @@ void Interp::store_home(int code)
 // G33 (spindle-synchronized move) / G33.1 (rigid tap).
 void Interp::move_g33(const Block &b, bool rigid)
 {
+    INTERP_FRAME();
     if (s_.comp_side != CANON_SIDE_OFF && rigid)
         throw InterpError("Cannot use G33.1 with cutter radius compensation");
     if (b.word('f')) throw InterpError("F word used with a g33/g33.1");
@@ -174,7 +188,7 @@ void Interp::move_g33(const Block &b, bool rigid)
         double scale = b.word('i') ? std::max(1.0, b.value('i')) : 1.0;
         out().rigid_tap(s_.sequence_number, end[AX_X], end[AX_Y], end[AX_Z], scale);
     } else {
-        out().straight_feed(s_.sequence_number, canon_pose(end));
+        out().straight_feed(s_.sequence_number, to_canon_pose(end));
         s_.current = end;
     }
     out().stop_speed_feed_synch();
@@ -183,6 +197,7 @@ void Interp::move_g33(const Block &b, bool rigid)
 // G38.2-G38.5 straight probe.
 void Interp::move_probe(const Block &b)
 {
+    INTERP_FRAME();
     if (!any_axis(b)) throw InterpError("All axes missing with motion code");
     if (s_.comp_side != CANON_SIDE_OFF)
         throw InterpError("Cannot probe with cutter radius compensation on");
@@ -194,7 +209,7 @@ void Interp::move_probe(const Block &b)
     for (int i = 0; i < AX_COUNT; i++) same = same && end[i] == s_.current[i];
     if (same && (type == 0 || type == 2)) throw InterpError("Start point too close to probe point");
     out().turn_probe_on();
-    out().straight_probe(s_.sequence_number, canon_pose(end), type);
+    out().straight_probe(s_.sequence_number, to_canon_pose(end), type);
     out().turn_probe_off();
     probe_result();
 }
@@ -202,6 +217,7 @@ void Interp::move_probe(const Block &b)
 // After a probe: the trip point into #5061-#5069 and #5070; re-read the current point.
 void Interp::probe_result()
 {
+    INTERP_FRAME();
     CanonPose p = real_out_.get_external_probe_position();
     Pose trip{p.x, p.y, p.z, p.a, p.b, p.c, p.u, p.v, p.w};
     for (int i = 0; i < AX_COUNT; i++) s_.params[5061 + i] = trip[i];
@@ -213,6 +229,7 @@ void Interp::probe_result()
 // Canned and lathe cycles: hand the block to the cycles module.
 void Interp::move_cycle(Block &b)
 {
+    INTERP_FRAME();
     int m = s_.motion_mode;
     if (s_.comp_side != CANON_SIDE_OFF)
         throw InterpError("Cannot use canned cycles with cutter radius compensation");

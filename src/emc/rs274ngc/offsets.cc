@@ -13,15 +13,10 @@ bool rotary(int i) { return i >= AX_A && i <= AX_C; }
 
 } // namespace
 
-// A state pose as a canon pose.
-CanonPose Interp::canon_pose(const Pose &p) const
-{
-    return CanonPose{p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8]};
-}
-
 // machine = Rot(R)(program + g92) + g5x + tlo, all in program units.
 Pose Interp::program_to_machine_pose(const Pose &p) const
 {
+    INTERP_FRAME();
     Pose m;
     for (int i = 0; i < AX_COUNT; i++) m[i] = p[i] + s_.axis_offset[i];
     if (s_.rotation_xy != 0.0) {
@@ -37,6 +32,7 @@ Pose Interp::program_to_machine_pose(const Pose &p) const
 // Inverse of program_to_machine_pose.
 Pose Interp::machine_to_program_pose(const Pose &m) const
 {
+    INTERP_FRAME();
     Pose p;
     for (int i = 0; i < AX_COUNT; i++) p[i] = m[i] - s_.origin_offset[i] - s_.tool_offset[i];
     if (s_.rotation_xy != 0.0) {
@@ -52,18 +48,21 @@ Pose Interp::machine_to_program_pose(const Pose &m) const
 // Emit SET_G5X_OFFSET for the active system.
 void Interp::emit_g5x()
 {
-    out().set_g5x_offset(s_.origin_index, canon_pose(s_.origin_offset));
+    INTERP_FRAME();
+    out().set_g5x_offset(s_.origin_index, to_canon_pose(s_.origin_offset));
 }
 
 // Emit SET_G92_OFFSET.
 void Interp::emit_g92()
 {
-    out().set_g92_offset(canon_pose(s_.axis_offset));
+    INTERP_FRAME();
+    out().set_g92_offset(to_canon_pose(s_.axis_offset));
 }
 
 // Make system index (1..9) active, keeping the machine position.
 void Interp::set_origin_index(int index)
 {
+    INTERP_FRAME();
     Pose m = program_to_machine_pose(s_.current);
     double k = s_.machine_to_program();
     s_.origin_index = index;
@@ -77,6 +76,7 @@ void Interp::set_origin_index(int index)
 // Group 0 codes except motion-like ones (step 26).
 void Interp::do_nonmodal(Block &b)
 {
+    INTERP_FRAME();
     int g = b.g_modes[GG_NONMODAL];
     if (g == 100) g10(b);
     if (g == 520 || g == 920) g92_family(g, b);
@@ -85,6 +85,7 @@ void Interp::do_nonmodal(Block &b)
 // G92.1/.2/.3 (step 27).
 void Interp::do_g92_family(Block &b)
 {
+    INTERP_FRAME();
     int g = b.g_modes[GG_G92];
     if (g != -1) g92_family(g, b);
 }
@@ -92,6 +93,7 @@ void Interp::do_g92_family(Block &b)
 // G52, G92, G92.1, G92.2, G92.3.
 void Interp::g92_family(int code, const Block &b)
 {
+    INTERP_FRAME();
     if (s_.comp_side != CANON_SIDE_OFF)
         throw InterpError("Cannot change axis offsets with cutter radius comp");
     double k = s_.machine_to_program();
@@ -125,6 +127,7 @@ void Interp::g92_family(int code, const Block &b)
 // G10: dispatch on L.
 void Interp::g10(const Block &b)
 {
+    INTERP_FRAME();
     int l = b.word('l') ? clamp_int(b.value('l')) : -1;
     if (l == 2 || l == 20) return g10_l2(b, l);
     if (l == 0 || l == 1 || l == 10 || l == 11) return g10_tool(b, l);
@@ -134,6 +137,7 @@ void Interp::g10(const Block &b)
 // G10 L2/L20: set a work offset (and rotation).
 void Interp::g10_l2(const Block &b, int l)
 {
+    INTERP_FRAME();
     if (!b.word('p')) throw InterpError("P word missing with G10 L2");
     double pv = b.value('p');
     int p = clamp_int(pv);

@@ -1,6 +1,7 @@
 // oword.cc: O-word control flow: subroutines, if/elseif/else, while, do, repeat, break, continue.
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <unistd.h>
 
 #include "interp.hh"
@@ -9,12 +10,15 @@ namespace {
 
 constexpr size_t MAX_CALL_LEVELS = 10;
 constexpr long LOOP_LIMIT = 1000000;
+// Passes of all loops together that one program (or MDI command) may run: a runaway guard for nested loops.
+constexpr long TOTAL_LOOP_LIMIT = 10000000;
 
 } // namespace
 
 // Cheap look at a line: its O-word label and keyword without evaluating anything.
 bool Interp::peek_oword(const std::string &line, std::string &name, OKind &kind)
 {
+    INTERP_FRAME();
     std::string t;
     for (char c : line) {
         if (c == '(' || c == ';') break;
@@ -55,6 +59,7 @@ bool Interp::peek_oword(const std::string &line, std::string &name, OKind &kind)
 // Start skipping lines until an O-word with this name and one of these kinds.
 void Interp::skip_to(const std::string &name, std::initializer_list<OKind> kinds, bool past)
 {
+    INTERP_FRAME();
     skipping_ = true;
     skip_name_ = name;
     skip_kinds_.assign(kinds.begin(), kinds.end());
@@ -65,6 +70,7 @@ void Interp::skip_to(const std::string &name, std::initializer_list<OKind> kinds
 // While skipping: does this O-word end the skip? (consumes it when skipping past)
 bool Interp::skip_match(const std::string &name, OKind kind)
 {
+    INTERP_FRAME();
     if (kind == O_SUB && skip_sub_ && name != skip_name_)
         throw InterpError("Nested subroutine definition");
     if (name != skip_name_) return false;
@@ -76,15 +82,26 @@ bool Interp::skip_match(const std::string &name, OKind kind)
     return !skip_past_;
 }
 
+// A flow problem: an error, or with OWORD_WARNONLY=1 a warning on stderr after which the line is ignored.
+void Interp::flow_fail(const std::string &what, const Block &b)
+{
+    INTERP_FRAME();
+    if (!s_.settings.oword_warnonly) throw InterpError(flow_error(what, b));
+    fflush(stdout);
+    fprintf(stderr, "%s\n", flow_error(what, b).c_str());
+}
+
 // Error text for flow problems: "<line>: what: '<source line>'".
 std::string Interp::flow_error(const std::string &what, const Block &) const
 {
+    INTERP_FRAME();
     return std::to_string(s_.sequence_number) + ": " + what + ": '" + s_.line_text + "'";
 }
 
 // Dispatch an O-word line.
 InterpStatus Interp::execute_oword(Block &b)
 {
+    INTERP_FRAME();
     switch (b.o_kind) {
     case O_SUB: o_sub(b); break;
     case O_ENDSUB: case O_RETURN: o_return(b); break;
@@ -106,6 +123,7 @@ InterpStatus Interp::execute_oword(Block &b)
 // "sub" met in normal flow: remember the definition and skip its body.
 void Interp::o_sub(Block &b)
 {
+    INTERP_FRAME();
     CallFrame &f = calls_.back();
     if (f.sub_name == b.o_name && f.pos - 1 == f.sub_line) return;
     subs_[b.o_name] = SubDef{f.file, f.pos - 1};
@@ -116,9 +134,10 @@ void Interp::o_sub(Block &b)
 // "return"/"endsub": leave the subroutine with an optional value.
 void Interp::o_return(Block &b)
 {
+    INTERP_FRAME();
     CallFrame &f = calls_.back();
     if (calls_.size() < 2 || f.fanuc || (b.o_kind == O_ENDSUB && f.sub_name != b.o_name))
-        throw InterpError(flow_error("not in a subroutine definition", b));
+        return flow_fail("not in a subroutine definition", b);
     if (f.autorestore && f.saved.valid) modal_restore(f.saved);
     pop_call();
     value_ = b.o_has_expr ? b.o_value : 0.0;
@@ -128,6 +147,7 @@ void Interp::o_return(Block &b)
 // "call": find the subroutine and enter it.
 void Interp::o_call(Block &b)
 {
+    INTERP_FRAME();
     SubDef def;
     if (!find_sub(b.o_name, def)) {
         std::string label = isdigit((unsigned char)b.o_name[0]) ? b.o_name : "<" + b.o_name + ">";
@@ -140,6 +160,7 @@ void Interp::o_call(Block &b)
 // Locate a subroutine: known, later in the current file, or in a file on the search path.
 bool Interp::find_sub(const std::string &name, SubDef &def)
 {
+    INTERP_FRAME();
     auto it = subs_.find(name);
     if (it != subs_.end()) { def = it->second; return true; }
     CallFrame &f = calls_.back();
@@ -173,6 +194,7 @@ bool Interp::find_sub(const std::string &name, SubDef &def)
 void Interp::push_call(const SubDef &def, const std::string &name, const std::vector<double> &args,
                        bool fanuc)
 {
+    INTERP_FRAME();
     if (calls_.size() >= MAX_CALL_LEVELS) throw InterpError("Too many subroutine levels");
     CallFrame f;
     f.file = def.file;
@@ -195,6 +217,7 @@ void Interp::push_call(const SubDef &def, const std::string &name, const std::ve
 // Leave a subroutine level: restore #1-#30 (not for Fanuc subs).
 void Interp::pop_call()
 {
+    INTERP_FRAME();
     CallFrame &f = calls_.back();
     if (!f.fanuc)
         for (int i = 1; i <= 30; i++) s_.params[i] = f.saved_args[i];
@@ -207,7 +230,8 @@ void Interp::pop_call()
 // "if [c]": run the branch or skip to the next elseif/else/endif.
 void Interp::o_if(Block &b)
 {
-    if (!b.o_has_expr) throw InterpError(flow_error("missing condition", b));
+    INTERP_FRAME();
+    if (!b.o_has_expr) return flow_fail("missing condition", b);
     CallFrame &f = calls_.back();
     f.flow.push_back(FlowFrame{O_IF, b.o_name, f.pos - 1, 0, b.o_value != 0.0});
     if (b.o_value == 0.0) skip_to(b.o_name, {O_ELSEIF, O_ELSE, O_ENDIF}, false);
@@ -216,16 +240,17 @@ void Interp::o_if(Block &b)
 // "elseif"/"else": take the branch only if no earlier one ran.
 void Interp::o_else(Block &b)
 {
+    INTERP_FRAME();
     CallFrame &f = calls_.back();
     if (f.flow.empty() || f.flow.back().kind != O_IF || f.flow.back().name != b.o_name)
-        throw InterpError(flow_error("undefined O-word label", b));
+        return flow_fail("undefined O-word label", b);
     FlowFrame &ff = f.flow.back();
     if (ff.taken) {
         skip_to(b.o_name, {O_ENDIF}, false);
         return;
     }
     bool take = b.o_kind == O_ELSE || b.o_value != 0.0;
-    if (b.o_kind == O_ELSEIF && !b.o_has_expr) throw InterpError(flow_error("missing condition", b));
+    if (b.o_kind == O_ELSEIF && !b.o_has_expr) return flow_fail("missing condition", b);
     ff.taken = take;
     if (!take) skip_to(b.o_name, {O_ELSEIF, O_ELSE, O_ENDIF}, false);
 }
@@ -233,16 +258,18 @@ void Interp::o_else(Block &b)
 // "endif": close the conditional.
 void Interp::o_endif(Block &b)
 {
+    INTERP_FRAME();
     CallFrame &f = calls_.back();
     if (f.flow.empty() || f.flow.back().kind != O_IF || f.flow.back().name != b.o_name)
-        throw InterpError(flow_error("undefined O-word label", b));
+        return flow_fail("undefined O-word label", b);
     f.flow.pop_back();
 }
 
 // "while [c]": start/continue a while loop, or close a do loop.
 void Interp::o_while(Block &b)
 {
-    if (!b.o_has_expr) throw InterpError(flow_error("missing condition", b));
+    INTERP_FRAME();
+    if (!b.o_has_expr) return flow_fail("missing condition", b);
     CallFrame &f = calls_.back();
     bool top = !f.flow.empty() && f.flow.back().name == b.o_name;
     if (top && f.flow.back().kind == O_DO) {
@@ -265,6 +292,7 @@ void Interp::o_while(Block &b)
 // "do": open a do-while loop.
 void Interp::o_do(Block &b)
 {
+    INTERP_FRAME();
     CallFrame &f = calls_.back();
     bool top = !f.flow.empty() && f.flow.back().name == b.o_name;
     if (!top) f.flow.push_back(FlowFrame{O_DO, b.o_name, f.pos - 1, 0, false});
@@ -273,7 +301,8 @@ void Interp::o_do(Block &b)
 // "repeat [n]": run the body n times.
 void Interp::o_repeat(Block &b)
 {
-    if (!b.o_has_expr) throw InterpError(flow_error("missing repeat count", b));
+    INTERP_FRAME();
+    if (!b.o_has_expr) return flow_fail("missing repeat count", b);
     CallFrame &f = calls_.back();
     long n = (long)clamp_int(std::floor(b.o_value));
     if (n <= 0) {
@@ -286,10 +315,11 @@ void Interp::o_repeat(Block &b)
 // "endwhile"/"endrepeat": jump back or finish the loop.
 void Interp::o_loop_end(Block &b)
 {
+    INTERP_FRAME();
     CallFrame &f = calls_.back();
     OKind want = b.o_kind == O_ENDWHILE ? O_WHILE : O_REPEAT;
     if (f.flow.empty() || f.flow.back().kind != want || f.flow.back().name != b.o_name)
-        throw InterpError(flow_error("undefined O-word label", b));
+        return flow_fail("undefined O-word label", b);
     FlowFrame &ff = f.flow.back();
     count_iteration(ff.iterations, b.o_name);
     if (want == O_WHILE) {
@@ -305,10 +335,11 @@ void Interp::o_loop_end(Block &b)
 // "break" (leave the loop) or "continue" (next iteration).
 void Interp::o_break(Block &b, bool cont)
 {
+    INTERP_FRAME();
     CallFrame &f = calls_.back();
     while (!f.flow.empty() && f.flow.back().kind == O_IF) f.flow.pop_back();
     if (f.flow.empty() || f.flow.back().name != b.o_name)
-        throw InterpError(flow_error("undefined O-word label", b));
+        return flow_fail("undefined O-word label", b);
     OKind kind = f.flow.back().kind;
     OKind end = kind == O_WHILE ? O_ENDWHILE : kind == O_REPEAT ? O_ENDREPEAT : O_WHILE;
     if (!cont) f.flow.pop_back();
@@ -318,7 +349,12 @@ void Interp::o_break(Block &b, bool cont)
 // Guard against endless loops: a clear error instead of a hang.
 void Interp::count_iteration(long &iterations, const std::string &name)
 {
+    INTERP_FRAME();
     if (++iterations > LOOP_LIMIT)
         throw InterpError(std::to_string(s_.sequence_number) + ": loop o" + name +
                           " ran more than " + std::to_string(LOOP_LIMIT) + " iterations");
+    if (++total_iterations_ > TOTAL_LOOP_LIMIT)
+        throw InterpError(std::to_string(s_.sequence_number) + ": loop o" + name +
+                          " ran more than " + std::to_string(TOTAL_LOOP_LIMIT) +
+                          " iterations of all loops in this program");
 }

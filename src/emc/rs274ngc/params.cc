@@ -6,6 +6,7 @@
 // Read "#..." at pos: #<name>, #n, ##n or #[expr].
 double Interp::read_parameter(const std::string &t, size_t &pos)
 {
+    INTERP_FRAME();
     pos++;
     if (pos < t.size() && t[pos] == '<') {
         std::string name = read_name(t, pos);
@@ -21,6 +22,7 @@ double Interp::read_parameter(const std::string &t, size_t &pos)
 // Read "<name>" at pos (pos on '<'); returns the name (spaces already removed, lower case).
 std::string Interp::read_name(const std::string &t, size_t &pos)
 {
+    INTERP_FRAME();
     size_t end = t.find('>', pos);
     if (end == std::string::npos) throw InterpError("Named parameter missing closing '>'");
     std::string name = t.substr(pos + 1, end - pos - 1);
@@ -32,6 +34,7 @@ std::string Interp::read_name(const std::string &t, size_t &pos)
 // Value of numbered parameter n; position and tool parameters are computed on demand.
 double Interp::get_numbered(int n) const
 {
+    INTERP_FRAME();
     if (n >= 5420 && n <= 5428) return s_.current[n - 5420];
     if (n >= 5021 && n <= 5029) return program_to_machine_pose(s_.current)[n - 5021];
     if (n == 5400) return s_.tools.empty() ? 0 : s_.tools[0].toolno < 0 ? 0 : s_.tools[0].toolno;
@@ -51,6 +54,7 @@ double Interp::get_numbered(int n) const
 // Refuse writes to read-only numbered parameters.
 void Interp::check_numbered_writable(int n) const
 {
+    INTERP_FRAME();
     if (n < 1 || n >= PARAM_COUNT) throw InterpError("Parameter number out of range");
     if ((n >= 5021 && n <= 5029) || (n >= 5400 && n <= 5413) || (n >= 5420 && n <= 5428))
         throw InterpError("Parameter is readonly");
@@ -59,6 +63,7 @@ void Interp::check_numbered_writable(int n) const
 // Refuse writes to predefined named parameters.
 void Interp::check_named_writable(const std::string &name) const
 {
+    INTERP_FRAME();
     double v;
     if (name[0] == '_' && const_cast<Interp *>(this)->predefined(name, v))
         throw InterpError("Cannot assign to read-only parameter #<" + name + ">");
@@ -69,6 +74,7 @@ void Interp::check_named_writable(const std::string &name) const
 // True when a named parameter is defined at this point.
 bool Interp::named_exists(const std::string &name)
 {
+    INTERP_FRAME();
     double v;
     if (name[0] == '_') {
         if (globals_.count(name)) return true;
@@ -80,6 +86,7 @@ bool Interp::named_exists(const std::string &name)
 // Value of a named parameter; undefined -> error.
 double Interp::get_named(const std::string &name)
 {
+    INTERP_FRAME();
     double v = 0;
     if (name[0] == '_') {
         auto it = globals_.find(name);
@@ -96,6 +103,7 @@ double Interp::get_named(const std::string &name)
 // Assign a named parameter in its scope (global when it starts with '_').
 void Interp::set_named(const std::string &name, double v)
 {
+    INTERP_FRAME();
     if (name[0] == '_')
         globals_[name] = v;
     else

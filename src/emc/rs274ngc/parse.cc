@@ -37,9 +37,9 @@ std::string normalize(const std::string &raw)
 // modal group of a G code ×10, -1 if unknown
 int g_group(int g)
 {
-    static const struct { int group; int codes[24]; } table[] = {
-        {GG_NONMODAL, {40, 100, 280, 281, 300, 301, 520, 530, 920, -1}},
-        {GG_MOTION, {0, 10, 20, 30, 50, 51, 330, 331, 382, 383, 384, 385, 700, 710, 711, 712,
+    static const struct { int group; int codes[32]; } table[] = {
+        {GG_NONMODAL, {40, 53, 100, 280, 281, 300, 301, 520, 530, 920, -1}},
+        {GG_MOTION, {0, 10, 20, 30, 50, 51, 52, 330, 331, 382, 383, 384, 385, 700, 710, 711, 712,
                      720, 721, 722, 730, 740, 760, 800, -1}},
         {GG_PLANE, {170, 180, 190, 171, 181, 191, -1}},
         {GG_DISTANCE, {900, 910, -1}},
@@ -105,6 +105,7 @@ OKind okind(const std::string &k)
 // Parse a raw line into b (expressions evaluated with the current parameter values).
 void Interp::parse_line(const std::string &raw, Block &b)
 {
+    INTERP_FRAME();
     std::string t = normalize(raw);
     size_t pos = 0;
     if (pos < t.size() && t[pos] == '/') {
@@ -129,6 +130,7 @@ void Interp::parse_line(const std::string &raw, Block &b)
 // Parse everything after the line number.
 void Interp::parse_words(const std::string &t, size_t pos, Block &b)
 {
+    INTERP_FRAME();
     bool words = false;
     while (pos < t.size()) {
         char c = t[pos];
@@ -156,6 +158,7 @@ void Interp::parse_words(const std::string &t, size_t pos, Block &b)
 // Parse "#n=value" or "#<name>=value".
 void Interp::parse_assignment(const std::string &t, size_t &pos, Block &b)
 {
+    INTERP_FRAME();
     pos++;
     std::string name;
     int index = 0;
@@ -181,6 +184,7 @@ void Interp::parse_assignment(const std::string &t, size_t &pos, Block &b)
 // Parse one letter word (or @ ^ $) at pos.
 void Interp::parse_word(char c, const std::string &t, size_t &pos, Block &b)
 {
+    INTERP_FRAME();
     if (c == 'g') { parse_g(t, pos, b); return; }
     if (c == 'm') { parse_m(t, pos, b); return; }
     bool special = c == '@' || c == '^' || c == '$';
@@ -209,6 +213,7 @@ void Interp::parse_word(char c, const std::string &t, size_t &pos, Block &b)
 // Parse a G word and file it in its modal group.
 void Interp::parse_g(const std::string &t, size_t &pos, Block &b)
 {
+    INTERP_FRAME();
     pos++;
     double v = read_real_value(t, pos);
     if (v < 0) throw InterpError("Negative g code used");
@@ -236,6 +241,7 @@ void Interp::parse_g(const std::string &t, size_t &pos, Block &b)
 // Parse an M word and file it in its modal group.
 void Interp::parse_m(const std::string &t, size_t &pos, Block &b)
 {
+    INTERP_FRAME();
     pos++;
     int m = to_int(read_real_value(t, pos));
     if (m < 0) throw InterpError("Negative m code used");
@@ -265,6 +271,7 @@ void Interp::parse_m(const std::string &t, size_t &pos, Block &b)
 // Parse "o<name>|oN|o[expr] keyword [args]".
 void Interp::parse_oword(const std::string &t, size_t &pos, Block &b)
 {
+    INTERP_FRAME();
     pos++;
     if (pos < t.size() && t[pos] == '<') {
         b.o_name = read_name(t, pos);

@@ -81,6 +81,7 @@ std::string upper(std::string v)
 // Look up a predefined parameter; false when name is not one.
 bool Interp::predefined(const std::string &name, double &v)
 {
+    INTERP_FRAME();
     for (const Predef &p : PREDEFS) {
         if (name == p.name) {
             v = p.fn(s_);
@@ -100,6 +101,7 @@ bool Interp::predefined(const std::string &name, double &v)
     if (name == "_remap_level") { v = remap_level_; return true; }
     if (name == "_value") { v = value_; return true; }
     if (name == "_value_returned") { v = value_returned_; return true; }
+    if (name.compare(0, 5, "_hal[") == 0) return hal_value(name, v);
     if (name.compare(0, 5, "_ini[") == 0 && s_.settings.ini_vars && !ini_path_.empty()) {
         auto it = ini_cache_.find(name);
         if (it != ini_cache_.end()) { v = it->second; return true; }
@@ -116,4 +118,13 @@ bool Interp::predefined(const std::string &name, double &v)
         return true;
     }
     return false;
+}
+
+// #<_hal[name]>: sampled from the HAL reader when HAL_PIN_VARS is on; otherwise not defined.
+bool Interp::hal_value(const std::string &name, double &v)
+{
+    INTERP_FRAME();
+    size_t close = name.find(']');
+    if (close != name.size() - 1 || !s_.settings.hal_pin_vars || !hal_reader_) return false;
+    return hal_reader_(name.substr(5, close - 5), v);
 }

@@ -4,6 +4,7 @@
 // Parse every line of subroutine `name` (between its sub and endsub lines) into blocks.
 std::vector<Block> Interp::sub_blocks(const std::string &name)
 {
+    INTERP_FRAME();
     SubDef def;
     if (!find_sub(name, def))
         throw InterpError("Unable to find profile subroutine o" + name);

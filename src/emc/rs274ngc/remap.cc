@@ -33,6 +33,7 @@ bool block_word(const Block &b, char c, double &v)
 // Read the REMAP= lines: "<code> modalgroup=<n> argspec=<spec> ngc=<name>".
 void Interp::load_remaps(const std::vector<std::string> &lines)
 {
+    INTERP_FRAME();
     for (const std::string &line : lines) {
         std::istringstream in(line);
         std::string code;
@@ -63,6 +64,7 @@ void Interp::load_remaps(const std::vector<std::string> &lines)
 // Call the procedure of a remapped code on this block (or the modal remapped motion); true if called.
 bool Interp::run_remap(Block &b)
 {
+    INTERP_FRAME();
     const RemapDef *def = nullptr;
     std::string code;
     if (b.remap_m != -1) {

@@ -92,11 +92,13 @@ void parse_options(int argc, char **argv, Options &o, std::vector<CanonTool> &to
     if (rest == 2) o.output = argv[optind + 1];
 }
 
-// report an interpreter error: text, then the source line
-void report(InterpBase &in)
+// report an interpreter error: text, the source line, then (-s) the functions it unwound through
+void report(InterpBase &in, const Options &o)
 {
     fflush(stdout);
     fprintf(stderr, "%s\n%s\n", in.error_text().c_str(), in.error_line().c_str());
+    if (!o.stack) return;
+    for (const std::string &frame : in.error_stack()) fprintf(stderr, "%s\n", frame.c_str());
 }
 
 // run the open program to its end; returns the exit status
@@ -106,7 +108,7 @@ int run_file(InterpBase &in, const Options &o)
         InterpStatus st = in.execute_next();
         if (st == INTERP_EXIT) return 0;
         if (st != INTERP_ERROR) continue;
-        report(in);
+        report(in, o);
         if (o.on_error != 0 || in.at_end_of_file()) return o.on_error == 0 ? 0 : 1;
     }
 }
@@ -122,7 +124,7 @@ int run_stdin(InterpBase &in, const Options &o)
         line[strcspn(line, "\r\n")] = 0;
         if (strcmp(line, "quit") == 0) return 0;
         if (in.execute_line(line) == INTERP_ERROR) {
-            report(in);
+            report(in, o);
             if (o.on_error == 2) return 1;
         }
     }

@@ -19,6 +19,7 @@ void pose_set(CanonPose &p, int i, double v)
 // Tool-data index of tool number toolno (index 0 = spindle excluded), -1 if absent.
 int Interp::find_tool_index(int toolno) const
 {
+    INTERP_FRAME();
     for (size_t i = 1; i < s_.tools.size(); i++)
         if (s_.tools[i].toolno == toolno) return (int)i;
     return -1;
@@ -27,6 +28,7 @@ int Interp::find_tool_index(int toolno) const
 // T word (step 8).
 void Interp::do_select_tool(Block &b)
 {
+    INTERP_FRAME();
     if (!b.word('t')) return;
     int t = clamp_int(b.value('t'));
     int index = t == 0 ? 0 : find_tool_index(t);
@@ -40,6 +42,7 @@ void Interp::do_select_tool(Block &b)
 // M6 / M61 (step 10); returns true when the block must end with execute-finish.
 bool Interp::do_tool_change(Block &b)
 {
+    INTERP_FRAME();
     int m = b.m_modes[MG_TOOL];
     if (m == -1) return false;
     if (s_.comp_side != CANON_SIDE_OFF)
@@ -67,7 +70,7 @@ bool Interp::do_tool_change(Block &b)
         out().comment("AXIS,hide");
         Pose p = s_.current;
         p[AX_Z] = 0.0 - s_.tool_offset[AX_Z];
-        out().straight_traverse(-1, canon_pose(p));
+        out().straight_traverse(-1, to_canon_pose(p));
         s_.current = p;
         out().comment("AXIS,show");
     }
@@ -78,7 +81,7 @@ bool Interp::do_tool_change(Block &b)
         for (int i = 0; i < AX_COUNT; i++)
             m[i] = s_.params[PARAM_G30_HOME + i] * ((i >= AX_A && i <= AX_C) ? 1.0 : k);
         s_.current = machine_to_program_pose(m);
-        out().straight_traverse(-1, canon_pose(s_.current));
+        out().straight_traverse(-1, to_canon_pose(s_.current));
         out().comment("AXIS,show");
     }
     out().change_tool();
@@ -92,7 +95,7 @@ bool Interp::do_tool_change(Block &b)
         if (s_.selected_tool != 0) tlo = Pose{o.x * k, o.y * k, o.z * k, o.a, o.b, o.c,
                                                o.u * k, o.v * k, o.w * k};
         apply_tlo(tlo);
-        if (s_.selected_tool != 0) out().use_tool_length_offset(canon_pose(tlo));
+        if (s_.selected_tool != 0) out().use_tool_length_offset(to_canon_pose(tlo));
     }
     return true;
 }
@@ -100,6 +103,7 @@ bool Interp::do_tool_change(Block &b)
 // G10 L0, L1, L10, L11: tool table edits.
 void Interp::g10_tool(const Block &b, int l)
 {
+    INTERP_FRAME();
     if (l == 0) {
         if (!s_.tools.empty() && s_.tools[0].toolno > 0)
             throw InterpError("G10 L0 not allowed with loaded tool " +

@@ -22,6 +22,7 @@ bool persistent(int n)
 // Read the .var file; a missing file leaves everything 0; out of order is fatal.
 void Interp::read_var_file()
 {
+    INTERP_FRAME();
     FILE *f = fopen(var_file_.c_str(), "r");
     if (!f) return;
     char line[512];
@@ -48,6 +49,7 @@ void Interp::read_var_file()
 // Write the .var file as <name>.new, keep <name>.bak as a hard link, then rename.
 void Interp::write_var_file()
 {
+    INTERP_FRAME();
     std::string tmp = var_file_ + ".new", bak = var_file_ + ".bak";
     FILE *f = fopen(tmp.c_str(), "w");
     if (!f) return;

@@ -96,16 +96,6 @@ void CompQueue::clear()
     moves_ = 0;
 }
 
-// canon pose of a 9-axis pose
-CanonPose to_canon_pose(const Pose &p)
-{
-    CanonPose c;
-    c.x = p[AX_X]; c.y = p[AX_Y]; c.z = p[AX_Z];
-    c.a = p[AX_A]; c.b = p[AX_B]; c.c = p[AX_C];
-    c.u = p[AX_U]; c.v = p[AX_V]; c.w = p[AX_W];
-    return c;
-}
-
 // write one move, applying the lathe tool-tip shift to end point and center
 void emit_move(Canon &out, const CompAxes &ax, const HeldMove &m, Vec2 shift)
 {

@@ -66,9 +66,6 @@ private:
     int moves_ = 0;
 };
 
-// canon pose of a 9-axis pose
-CanonPose to_canon_pose(const Pose &p);
-
 // emit one compensated move through `out` with its plane points shifted by `shift`
 void emit_move(Canon &out, const CompAxes &ax, const HeldMove &m, Vec2 shift);
 

@@ -24,16 +24,6 @@ char axis_letter(int i)
     return letters[i];
 }
 
-// copy the nine values into the canon pose
-CanonPose to_canon(const Pose &p)
-{
-    CanonPose c;
-    c.x = p[AX_X]; c.y = p[AX_Y]; c.z = p[AX_Z];
-    c.a = p[AX_A]; c.b = p[AX_B]; c.c = p[AX_C];
-    c.u = p[AX_U]; c.v = p[AX_V]; c.w = p[AX_W];
-    return c;
-}
-
 // remember where to emit and in which axes
 CycleMoves::CycleMoves(InterpState &s, Canon &c, const PlaneAxes &ax, int line)
     : s_(s), canon_(c), ax_(ax), line_(line)
@@ -54,14 +44,14 @@ Pose CycleMoves::target(double a, double b, double c) const
 void CycleMoves::rapid(double a, double b, double c)
 {
     s_.current = target(a, b, c);
-    canon_.straight_traverse(line_, to_canon(s_.current));
+    canon_.straight_traverse(line_, to_canon_pose(s_.current));
 }
 
 // feed move in cycle axes
 void CycleMoves::feed(double a, double b, double c)
 {
     s_.current = target(a, b, c);
-    canon_.straight_feed(line_, to_canon(s_.current));
+    canon_.straight_feed(line_, to_canon_pose(s_.current));
 }
 
 // arc feed in the cycle plane, the depth axis and the other axes unchanged
@@ -74,7 +64,14 @@ void CycleMoves::arc(double a, double b, double ca, double cb, int rotation)
                     p[AX_V], p[AX_W]);
 }
 
-// feed whose printed coordinates use the XZ/YZ order of the other plane (reference G84/G74 behaviour)
+// Feed for the two tapping feeds of G84/G74, reproducing LinuxCNC 2.10 exactly (the conformance
+// cases interp/g84/g18 and interp/g84/g19 show it). In G17 it is a plain feed. In G18 and G19 the
+// reference emits STRAIGHT_FEED with the cycle's own triple (first plane axis, second plane axis,
+// depth) left unrotated in one of the two side planes, so the printed X Y Z are a rotation of the
+// true target: G18 (cycle triple Z X Y) prints X=depth Y, Y=Z, Z=X; G19 (cycle triple Y Z X) prints
+// X=Z, Y=depth X, Z=Y. Only the printed call is rotated: s.current gets the true target, so the
+// next move of the cycle (and of the program) starts from the correct point, as in the reference.
+// Pinned by tests/interp-cycles/tap-axis-order.
 void CycleMoves::feed_swapped(double a, double b, double c)
 {
     if (ax_.cc != AX_Y && ax_.cc != AX_X) {
@@ -88,7 +85,7 @@ void CycleMoves::feed_swapped(double a, double b, double c)
         p[AX_X] = b; p[AX_Y] = c; p[AX_Z] = a;
     }
     s_.current = target(a, b, c);
-    canon_.straight_feed(line_, to_canon(p));
+    canon_.straight_feed(line_, to_canon_pose(p));
 }
 
 }  // namespace cycles

@@ -21,9 +21,6 @@ PlaneAxes plane_axes(CanonPlane p);
 // lower-case axis letter of Pose index i
 char axis_letter(int i);
 
-// convert a 9-axis Pose into the canon pose type
-CanonPose to_canon(const Pose &p);
-
 // Emits rapids and feeds that change only the three cycle axes of the current point.
 class CycleMoves {
 public:
@@ -33,7 +30,7 @@ public:
     void rapid(double a, double b, double c);
     // feed to (a, b, c) in cycle axes; updates s.current
     void feed(double a, double b, double c);
-    // feed to (a, b, c) printed with the axis order of the other side plane, as the reference does in G84/G74
+    // G84/G74 tapping feed: in G18/G19 the printed X Y Z are rotated as the reference prints them (see .cc)
     void feed_swapped(double a, double b, double c);
     // arc in the cycle plane to (a, b) about (ca, cb); rotation > 0 counterclockwise
     void arc(double a, double b, double ca, double cb, int rotation);
