@@ -93,15 +93,15 @@ void halpr_param_free(hal_param_t *param)
 }
 
 /* Copy a value of `type` from src into a param cell. */
-static void hal_param_store(hal_data_u *cell, hal_type_t type, const void *src)
+static void hal_param_store(void *cell, hal_type_t type, const void *src)
 {
     switch (type) {
-    case HAL_BIT: cell->b = *(const hal_bit_t *)src != 0; break;
-    case HAL_FLOAT: cell->f = *(const hal_float_t *)src; break;
-    case HAL_S32: cell->s = *(const hal_s32_t *)src; break;
-    case HAL_U32: cell->u = *(const hal_u32_t *)src; break;
-    case HAL_S64: cell->ls = *(const hal_s64_t *)src; break;
-    case HAL_U64: cell->lu = *(const hal_u64_t *)src; break;
+    case HAL_BIT: *(hal_bit_t *)cell = *(const hal_bit_t *)src != 0; break;
+    case HAL_FLOAT: *(hal_float_t *)cell = *(const hal_float_t *)src; break;
+    case HAL_S32: *(hal_s32_t *)cell = *(const hal_s32_t *)src; break;
+    case HAL_U32: *(hal_u32_t *)cell = *(const hal_u32_t *)src; break;
+    case HAL_S64: *(hal_s64_t *)cell = *(const hal_s64_t *)src; break;
+    case HAL_U64: *(hal_u64_t *)cell = *(const hal_u64_t *)src; break;
     default: break;
     }
 }

@@ -1,17 +1,19 @@
 /* hal_query.c: user-side value access by name (setp/getp/sets/gets semantics of halcmd.md §5). */
 #include "hal_internal.h"
 
-/* Copy a value of `type` between cells, touching only that type's bytes. */
-static void hal_value_copy(hal_data_u *dst, const hal_data_u *src, hal_type_t type)
+/* Copy a value of `type` between cells, touching only that type's bytes. Cells are
+   accessed through their own type: a param cell (e.g. <funct>.tmax) is only aligned
+   for that type, not for the whole hal_data_u union. */
+static void hal_value_copy(void *dst, const void *src, hal_type_t type)
 {
     switch (type) {
-    case HAL_BIT: dst->b = src->b; break;
-    case HAL_FLOAT: dst->f = src->f; break;
-    case HAL_S32: dst->s = src->s; break;
-    case HAL_U32: dst->u = src->u; break;
-    case HAL_S64: dst->ls = src->ls; break;
-    case HAL_U64: dst->lu = src->lu; break;
-    case HAL_PORT: dst->p = src->p; break;
+    case HAL_BIT: *(hal_bit_t *)dst = *(const hal_bit_t *)src; break;
+    case HAL_FLOAT: *(hal_float_t *)dst = *(const hal_float_t *)src; break;
+    case HAL_S32: *(hal_s32_t *)dst = *(const hal_s32_t *)src; break;
+    case HAL_U32: *(hal_u32_t *)dst = *(const hal_u32_t *)src; break;
+    case HAL_S64: *(hal_s64_t *)dst = *(const hal_s64_t *)src; break;
+    case HAL_U64: *(hal_u64_t *)dst = *(const hal_u64_t *)src; break;
+    case HAL_PORT: *(hal_port_t *)dst = *(const hal_port_t *)src; break;
     default: break;
     }
 }

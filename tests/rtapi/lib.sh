@@ -19,18 +19,32 @@ rt_key() {
     printf '0x%08x' $(( $1 ^ (${2:-${OPENEMC_INSTANCE:-0}} << 24) ))
 }
 
+# rt_open_lock N: open the lock file of instance N read-only as fd rt_other_fd, in the
+# directory shared by all users or else in this user's own one (as scripts/runtests_pool.py)
+rt_open_lock() {
+    local d m base=${TMPDIR:-/tmp}/openemc-instance-locks
+    for d in "$base:1777" "$base-$(id -u):700"; do
+        m=${d##*:} d=${d%:*}
+        [ -e "$d/$1.lock" ] || (umask 0; mkdir -p -m "$m" "$d" && : >> "$d/$1.lock") 2>/dev/null
+        if [ -r "$d/$1.lock" ] && exec {rt_other_fd}< "$d/$1.lock"; then
+            return 0
+        fi
+    done
+    return 1
+}
+
 # rt_reserve_instance: set rt_other to a free instance, locked like runtests does
 rt_reserve_instance() {
-    local dir=${TMPDIR:-/tmp}/openemc-instance-locks i
-    mkdir -p "$dir"
+    local i
     for i in $(seq 255 -1 1); do
-        exec {rt_other_fd}>>"$dir/$i.lock"
+        ipcs -m | grep -qi "$(rt_key 0x48414C32 "$i")" && continue
+        rt_open_lock "$i" || continue
         if flock -n "$rt_other_fd"; then
             rt_other=$i
             OPENEMC_INSTANCE=$i realtime stop >/dev/null 2>&1
             return 0
         fi
-        exec {rt_other_fd}>&-
+        exec {rt_other_fd}<&-
     done
     echo "no free instance" >&2
     return 1

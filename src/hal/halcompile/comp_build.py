@@ -78,10 +78,24 @@ def build_rt(csrc, name, out_so, extra_cflags=()):
         shutil.rmtree(tmp, ignore_errors=True)
 
 
+def sanitizer_flags():
+    """ASAN_FLAGS of the tree's Makefile.inc (configure --enable-asan): a program linking the
+    tree's sanitizer-built libraries needs the same flags so their runtime comes first."""
+    try:
+        with open(os.path.join(tree_top(), 'Makefile.inc')) as f:
+            for line in f:
+                key, sep, value = line.partition('=')
+                if sep and key.strip() == 'ASAN_FLAGS':
+                    return value.split()
+    except OSError:
+        pass
+    return []
+
+
 def build_user(csrc, out_exe, extra_cflags=(), extra_ldflags=()):
     """Compile a userspace HAL program."""
     lib = lib_dir()
-    run(['gcc', '-std=gnu11', '-O2', '-g', '-DULAPI'] + WARN +
+    run(['gcc', '-std=gnu11', '-O2', '-g', '-DULAPI'] + WARN + sanitizer_flags() +
         ['-I' + headers_dir(), '-I' + os.path.dirname(os.path.abspath(csrc))] +
         list(extra_cflags) + [csrc, '-o', out_exe, '-L' + lib, '-Wl,-rpath,' + lib,
                               '-llinuxcnchal', '-lrtapi', '-lm'] + list(extra_ldflags))

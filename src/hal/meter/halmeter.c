@@ -10,17 +10,18 @@ static void usage(void)
     fprintf(stderr, "Usage: halmeter [-s] {pin|sig|param} NAME\n");
 }
 
-/* Prints a value cell of the given type as `halcmd getp` does. */
-static void print_value(hal_type_t type, const hal_data_u *d)
+/* Prints a value cell of the given type as `halcmd getp` does; the cell is read through its
+   own type, as a param cell is aligned only for that type. */
+static void print_value(hal_type_t type, const void *d)
 {
     switch (type) {
-    case HAL_BIT: printf("%s\n", d->b ? "TRUE" : "FALSE"); break;
-    case HAL_FLOAT: printf("%.7g\n", (double)d->f); break;
-    case HAL_S32: printf("%d\n", (int)d->s); break;
-    case HAL_U32: printf("%u\n", (unsigned)d->u); break;
-    case HAL_S64: printf("%lld\n", (long long)d->ls); break;
-    case HAL_U64: printf("%llu\n", (unsigned long long)d->lu); break;
-    default: printf("%d\n", (int)d->p); break;
+    case HAL_BIT: printf("%s\n", *(const hal_bit_t *)d ? "TRUE" : "FALSE"); break;
+    case HAL_FLOAT: printf("%.7g\n", (double)*(const hal_float_t *)d); break;
+    case HAL_S32: printf("%d\n", (int)*(const hal_s32_t *)d); break;
+    case HAL_U32: printf("%u\n", (unsigned)*(const hal_u32_t *)d); break;
+    case HAL_S64: printf("%lld\n", (long long)*(const hal_s64_t *)d); break;
+    case HAL_U64: printf("%llu\n", (unsigned long long)*(const hal_u64_t *)d); break;
+    default: printf("%d\n", (int)*(const hal_port_t *)d); break;
     }
 }
 

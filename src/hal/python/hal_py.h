@@ -16,7 +16,7 @@ extern PyTypeObject hal_py_item_type;
 int hal_py_to_value(hal_type_t type, PyObject *obj, hal_data_u *out);
 
 /* Builds the Python value of a HAL value cell. */
-PyObject *hal_py_from_value(hal_type_t type, const hal_data_u *value);
+PyObject *hal_py_from_value(hal_type_t type, const void *value);
 
 /* Creates a pin or param owned by comp_id and returns a new `_hal.item`. */
 PyObject *hal_py_item_new(int comp_id, const char *full_name, const char *short_name,

@@ -79,13 +79,13 @@ static PyObject *item_set(PyObject *obj, PyObject *value)
     if (hal_py_to_value(self->type, value, &tmp) < 0) {
         return NULL;
     }
-    switch (self->type) {
-    case HAL_BIT: cell->b = tmp.b; break;
-    case HAL_FLOAT: cell->f = tmp.f; break;
-    case HAL_S32: cell->s = tmp.s; break;
-    case HAL_U32: cell->u = tmp.u; break;
-    case HAL_S64: cell->ls = tmp.ls; break;
-    default: cell->lu = tmp.lu; break;
+    switch (self->type) {  /* typed stores: a param cell is aligned only for its own type */
+    case HAL_BIT: *(hal_bit_t *)(void *)cell = tmp.b; break;
+    case HAL_FLOAT: *(hal_float_t *)(void *)cell = tmp.f; break;
+    case HAL_S32: *(hal_s32_t *)(void *)cell = tmp.s; break;
+    case HAL_U32: *(hal_u32_t *)(void *)cell = tmp.u; break;
+    case HAL_S64: *(hal_s64_t *)(void *)cell = tmp.ls; break;
+    default: *(hal_u64_t *)(void *)cell = tmp.lu; break;
     }
     Py_RETURN_NONE;
 }

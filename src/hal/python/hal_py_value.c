@@ -147,16 +147,16 @@ int hal_py_to_value(hal_type_t type, PyObject *obj, hal_data_u *out)
 }
 
 /* Returns the Python object for a value cell. */
-PyObject *hal_py_from_value(hal_type_t type, const hal_data_u *value)
+PyObject *hal_py_from_value(hal_type_t type, const void *value)
 {
     switch (type) {
-    case HAL_BIT: return PyBool_FromLong(value->b);
-    case HAL_FLOAT: return PyFloat_FromDouble(value->f);
-    case HAL_S32: return PyLong_FromLong(value->s);
-    case HAL_U32: return PyLong_FromUnsignedLong(value->u);
-    case HAL_S64: return PyLong_FromLongLong(value->ls);
-    case HAL_U64: return PyLong_FromUnsignedLongLong(value->lu);
-    case HAL_PORT: return PyLong_FromUnsignedLong(value->u);
+    case HAL_BIT: return PyBool_FromLong(*(const hal_bit_t *)value);
+    case HAL_FLOAT: return PyFloat_FromDouble(*(const hal_float_t *)value);
+    case HAL_S32: return PyLong_FromLong(*(const hal_s32_t *)value);
+    case HAL_U32: return PyLong_FromUnsignedLong(*(const hal_u32_t *)value);
+    case HAL_S64: return PyLong_FromLongLong(*(const hal_s64_t *)value);
+    case HAL_U64: return PyLong_FromUnsignedLongLong(*(const hal_u64_t *)value);
+    case HAL_PORT: return PyLong_FromUnsignedLong(*(const hal_u32_t *)value);
     default: Py_RETURN_NONE;
     }
 }

@@ -54,8 +54,8 @@ static int hc_show_thread_head(hal_thread_t *t)
         fprintf(stderr, "unexpected: cannot find time/tmax pin for %s thread\n", t->name);
         return -1;
     }
-    tv = halpr_pin_value(time)->s;
-    mv = halpr_param_value(tmax)->s;
+    tv = *(const hal_s32_t *)(const void *)halpr_pin_value(time);
+    mv = *(const hal_s32_t *)(const void *)halpr_param_value(tmax);
     if (hc.script_mode)
         hc_out("%ld YES %s %8ld %ld\n", t->period, t->name, tv, mv);
     else

@@ -12,7 +12,33 @@ static void *module;
 static long period_ns = 1000000;
 static fake_item_t *cycle_list[MAX_FUNCTS];
 static int n_cycle;
+static char **param_strings;
+static size_t n_param_strings;
 extern long long fake_clock_ns;
+
+/* Copy a string parameter value, remembering it so main can free it at exit. */
+static char *keep_string(const char *value)
+{
+    char **grown = realloc(param_strings, (n_param_strings + 1) * sizeof(*grown));
+    char *copy = strdup(value);
+    if (!grown || !copy) {
+        printf("out of memory\n");
+        exit(1);
+    }
+    param_strings = grown;
+    param_strings[n_param_strings++] = copy;
+    return copy;
+}
+
+/* Free every string parameter value given to the module. */
+static void free_param_strings(void)
+{
+    for (size_t i = 0; i < n_param_strings; i++)
+        free(param_strings[i]);
+    free(param_strings);
+    param_strings = NULL;
+    n_param_strings = 0;
+}
 
 /* Directory holding the realtime modules. */
 static const char *rtlib_dir(void)
@@ -44,6 +70,10 @@ static int set_modparam(const char *arg)
         return -1;
     }
     char *copy = strdup(eq + 1), *save = NULL, *tok;
+    if (!copy) {
+        printf("out of memory\n");
+        exit(1);
+    }
     int i = 0, n = info->count ? info->count : 1;
     for (tok = strtok_r(copy, ",", &save); tok && i < n; tok = strtok_r(NULL, ",", &save), i++) {
         if (info->type == 'i')
@@ -51,10 +81,11 @@ static int set_modparam(const char *arg)
         else if (info->type == 'l')
             ((long *)info->address)[i] = strtol(tok, NULL, 0);
         else
-            ((char **)info->address)[i] = info->count ? strdup(tok) : strdup(eq + 1);
+            ((char **)info->address)[i] = keep_string(info->count ? tok : eq + 1);
     }
     if (!*(eq + 1) && info->type == 's' && !info->count)
-        *(char **)info->address = strdup("");
+        *(char **)info->address = keep_string("");
+    free(copy);
     return 0;
 }
 
@@ -220,5 +251,7 @@ int main(void)
         if (argc)
             dispatch(argc, argv);
     }
+    free_param_strings();
+    fake_free_memory();
     return 0;
 }

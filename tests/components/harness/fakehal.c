@@ -1,5 +1,6 @@
 /* fakehal.c: minimal single-process HAL and RTAPI used to unit-test component modules. */
 #include <stdarg.h>
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -171,8 +172,34 @@ int hal_ready(int comp_id) { (void)comp_id; comp_ready = 1; return 0; }
 /* Record that the component was removed. */
 int hal_exit(int comp_id) { (void)comp_id; comp_exited = 1; return 0; }
 
-/* Zeroed memory that is never freed. */
-void *hal_malloc(long int size) { return calloc(1, size); }
+/* One hal_malloc block: kept on a list, as HAL memory lives until HAL goes away. */
+typedef struct fake_block {
+    struct fake_block *next;
+    max_align_t data[];
+} fake_block_t;
+
+static fake_block_t *blocks;
+
+/* Zeroed memory owned by the fake HAL until fake_free_memory. */
+void *hal_malloc(long int size)
+{
+    fake_block_t *b = size < 0 ? NULL : calloc(1, sizeof(*b) + (size_t)size);
+    if (!b)
+        return NULL;
+    b->next = blocks;
+    blocks = b;
+    return b->data;
+}
+
+/* Free every hal_malloc block (when the fake HAL shuts down). */
+void fake_free_memory(void)
+{
+    while (blocks) {
+        fake_block_t *next = blocks->next;
+        free(blocks);
+        blocks = next;
+    }
+}
 
 /* Constructors are accepted and ignored. */
 int hal_set_constructor(int comp_id, hal_constructor_t make)

@@ -29,4 +29,6 @@ void *fake_cell(fake_item_t *it);
 /* Ready flag of the last component, and whether hal_exit was called. */
 int fake_ready(void);
 int fake_exited(void);
+/* Free all hal_malloc memory (the fake HAL shuts down). */
+void fake_free_memory(void);
 #endif
