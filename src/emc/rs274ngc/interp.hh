@@ -201,6 +201,9 @@ private:
     void do_io(Block &b);
     void do_wait_input(Block &b);
     bool do_tool_change(Block &b);
+    void set_tool_number(const Block &b);
+    void tool_change_moves();
+    void reapply_tool_length();
     void do_spindle(Block &b);
     void do_coolant(Block &b);
     void do_overrides(Block &b);
@@ -261,8 +264,11 @@ private:
     void convert_units(CanonUnits to);
     int find_tool_index(int toolno) const;
     void m2_reset(int code);
+    void m2_stop_spindles();
+    void check_closing_percent();
     void modal_save(bool autorestore);
     void modal_restore(const SavedModal &m);
+    void modal_restore_block(const SavedModal &m, Block &b) const;
     void restore_coolant(const SavedModal &m, bool first);
 
     // REMAP= support (remap.cc)

@@ -185,13 +185,7 @@ void Interp::m2_reset(int code)
     if (comp_ && s_.comp_side != CANON_SIDE_OFF) comp_->reset();
     s_.comp_side = CANON_SIDE_OFF;
     s_.comp_code = 400;
-    for (int sp = 0; sp < SPINDLE_COUNT; sp++) {
-        out().stop_spindle_turning(sp);
-        s_.spindle_dir[sp] = CANON_STOPPED;
-        out().set_spindle_mode(sp, 0);
-        s_.css_mode[sp] = false;
-    }
-    s_.speed_override = true;
+    m2_stop_spindles();
     s_.motion_mode = 10;
     if (s_.mist) out().mist_off();
     if (s_.flood) out().flood_off();
@@ -203,6 +197,24 @@ void Interp::m2_reset(int code)
     }
     if (code == 30) out().pallet_shuttle();
     out().program_end();
+    check_closing_percent();
+}
+
+// M2/M30 part: stop every spindle, leave CSS mode and re-enable the speed override.
+void Interp::m2_stop_spindles()
+{
+    for (int sp = 0; sp < SPINDLE_COUNT; sp++) {
+        out().stop_spindle_turning(sp);
+        s_.spindle_dir[sp] = CANON_STOPPED;
+        out().set_spindle_mode(sp, 0);
+        s_.css_mode[sp] = false;
+    }
+    s_.speed_override = true;
+}
+
+// A program opened with % must close with %: comment when the rest of the file has none.
+void Interp::check_closing_percent()
+{
     CallFrame &f = calls_[0];
     if (f.file && f.file->percent) {
         bool closing = false;

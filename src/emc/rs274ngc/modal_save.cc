@@ -33,14 +33,9 @@ void Interp::modal_save(bool autorestore)
     calls_.back().autorestore = autorestore;
 }
 
-// Re-issue the settings that differ from a saved state.
-void Interp::modal_restore(const SavedModal &m)
+// Fill b with the G/M/F/S words that bring the current modes back to the saved state m.
+void Interp::modal_restore_block(const SavedModal &m, Block &b) const
 {
-    INTERP_FRAME();
-    Block u;
-    if (m.units != s_.units) u.g_modes[GG_UNITS] = m.units == CANON_UNITS_MM ? 210 : 200;
-    do_units(u);
-    Block b;
     if (m.feed_mode != s_.feed_mode)
         b.g_modes[GG_FEED] = m.feed_mode == FEED_INVERSE_TIME ? 930
                              : m.feed_mode == FEED_UNITS_PER_REV ? 950 : 940;
@@ -66,6 +61,17 @@ void Interp::modal_restore(const SavedModal &m)
     if (m.retract != s_.retract) b.g_modes[GG_RETRACT] = m.retract == RETRACT_OLD_Z ? 980 : 990;
     if (m.lathe_diameter != s_.lathe_diameter) b.g_modes[GG_LATHE] = m.lathe_diameter ? 70 : 80;
     if (m.css_mode != s_.css_mode[0]) b.g_modes[GG_SPINDLE] = m.css_mode ? 960 : 970;
+}
+
+// Re-issue the settings that differ from a saved state (units first, then in execution order).
+void Interp::modal_restore(const SavedModal &m)
+{
+    INTERP_FRAME();
+    Block u;
+    if (m.units != s_.units) u.g_modes[GG_UNITS] = m.units == CANON_UNITS_MM ? 210 : 200;
+    do_units(u);
+    Block b;
+    modal_restore_block(m, b);
     do_spindle_mode(b);
     do_feed_mode(b);
     do_feed_rate(b);

@@ -48,18 +48,36 @@ bool Interp::do_tool_change(Block &b)
     if (s_.comp_side != CANON_SIDE_OFF)
         throw InterpError("Cannot change tools with cutter radius compensation on");
     if (m == 61) {
-        if (!b.word('q') || b.value('q') < 0)
-            throw InterpError("Need non-negative Q-word to specify tool number with M61");
-        int q = clamp_int(b.value('q'));
-        int index = q == 0 ? 0 : find_tool_index(q);
-        if (index < 0)
-            throw InterpError("Requested tool " + std::to_string(q) + " not found in the tool table");
-        out().change_tool_number(index);
-        s_.current_pocket = index;
-        s_.tools[0].toolno = q;
+        set_tool_number(b);
         return true;
     }
     if (s_.selected_pocket < 0) throw InterpError("Need tool prepared -Txx- for toolchange");
+    tool_change_moves();
+    out().change_tool();
+    int index = s_.selected_pocket;
+    if (index > 0 && index < (int)s_.tools.size()) s_.tools[0] = s_.tools[index];
+    s_.current_pocket = index;
+    if (s_.settings.retain_g43 && s_.tlo_code == 430) reapply_tool_length();
+    return true;
+}
+
+// M61 Qn: declare tool n loaded without moving anything.
+void Interp::set_tool_number(const Block &b)
+{
+    if (!b.word('q') || b.value('q') < 0)
+        throw InterpError("Need non-negative Q-word to specify tool number with M61");
+    int q = clamp_int(b.value('q'));
+    int index = q == 0 ? 0 : find_tool_index(q);
+    if (index < 0)
+        throw InterpError("Requested tool " + std::to_string(q) + " not found in the tool table");
+    out().change_tool_number(index);
+    s_.current_pocket = index;
+    s_.tools[0].toolno = q;
+}
+
+// Spindle stop, quill-up move and G30 move that the INI settings ask for before an M6.
+void Interp::tool_change_moves()
+{
     if (!s_.settings.tool_change_with_spindle_on) {
         for (int sp = 0; sp < SPINDLE_COUNT; sp++) {
             out().stop_spindle_turning(sp);
@@ -84,20 +102,18 @@ bool Interp::do_tool_change(Block &b)
         out().straight_traverse(-1, to_canon_pose(s_.current));
         out().comment("AXIS,show");
     }
-    out().change_tool();
-    int index = s_.selected_pocket;
-    if (index > 0 && index < (int)s_.tools.size()) s_.tools[0] = s_.tools[index];
-    s_.current_pocket = index;
-    if (s_.settings.retain_g43 && s_.tlo_code == 430) {
-        Pose tlo{};
-        double k = s_.machine_to_program();
-        const CanonPose &o = s_.tools[0].offset;
-        if (s_.selected_tool != 0) tlo = Pose{o.x * k, o.y * k, o.z * k, o.a, o.b, o.c,
-                                               o.u * k, o.v * k, o.w * k};
-        apply_tlo(tlo);
-        if (s_.selected_tool != 0) out().use_tool_length_offset(to_canon_pose(tlo));
-    }
-    return true;
+}
+
+// RETAIN_G43: after M6 with G43 active, apply the new tool's length offset.
+void Interp::reapply_tool_length()
+{
+    Pose tlo{};
+    double k = s_.machine_to_program();
+    const CanonPose &o = s_.tools[0].offset;
+    if (s_.selected_tool != 0) tlo = Pose{o.x * k, o.y * k, o.z * k, o.a, o.b, o.c,
+                                           o.u * k, o.v * k, o.w * k};
+    apply_tlo(tlo);
+    if (s_.selected_tool != 0) out().use_tool_length_offset(to_canon_pose(tlo));
 }
 
 // G10 L0, L1, L10, L11: tool table edits.

@@ -4,6 +4,7 @@
 #include "rtapi_string.h"
 #include "rtapi_errno.h"
 #include "hal.h"
+#include "comp_args.h"
 
 MODULE_LICENSE("GPL");
 MODULE_AUTHOR("OpenEMC");
@@ -125,9 +126,7 @@ static int enum_make(const char *spec, const char *prefix)
 /* Number of channels, or -1 when names= does not match enums=. */
 static int enum_channels(void)
 {
-    int n = 0, k = 0;
-    while (n < ENUM_MAX_CHAN && enums[n] && enums[n][0]) n++;
-    while (k < ENUM_MAX_CHAN && names[k] && names[k][0]) k++;
+    int n = comp_count_args(enums, ENUM_MAX_CHAN), k = comp_count_args(names, ENUM_MAX_CHAN);
     if (n == 0) {
         rtapi_print_msg(RTAPI_MSG_ERR, "ENUM: ERROR: no enums= given (e.g. enums=D;a;b;c)\n");
         return -1;
@@ -139,29 +138,26 @@ static int enum_channels(void)
     return n;
 }
 
+/* Create channel i, named from names= or enum.<i>, in component id. */
+static int enum_instance(int id, int i)
+{
+    char prefix[HAL_NAME_LEN + 1];
+    comp_id = id;
+    if (names[0] && names[0][0]) rtapi_snprintf(prefix, sizeof(prefix), "%s", names[i]);
+    else rtapi_snprintf(prefix, sizeof(prefix), "enum.%d", i);
+    return enum_make(enums[i], prefix);
+}
+
 /* Create every configured channel. */
 int rtapi_app_main(void)
 {
-    char prefix[HAL_NAME_LEN + 1];
-    int n = enum_channels(), r = 0;
+    int n = enum_channels();
     if (n < 0) return -EINVAL;
-    comp_id = hal_init("enum");
-    if (comp_id < 0) return comp_id;
-    for (int i = 0; i < n && r == 0; i++) {
-        if (names[0] && names[0][0]) rtapi_snprintf(prefix, sizeof(prefix), "%s", names[i]);
-        else rtapi_snprintf(prefix, sizeof(prefix), "enum.%d", i);
-        r = enum_make(enums[i], prefix);
-    }
-    if (r) {
-        hal_exit(comp_id);
-        return r;
-    }
-    hal_ready(comp_id);
-    return 0;
+    return comp_setup("enum", n, enum_instance);
 }
 
 /* Remove the component. */
 void rtapi_app_exit(void)
 {
-    hal_exit(comp_id);
+    comp_teardown();
 }

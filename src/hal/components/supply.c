@@ -4,6 +4,7 @@
 #include "rtapi_string.h"
 #include "rtapi_errno.h"
 #include "hal.h"
+#include "comp_args.h"
 
 MODULE_LICENSE("GPL");
 MODULE_AUTHOR("OpenEMC");
@@ -20,8 +21,6 @@ typedef struct {
     hal_float_t *variable, *variable_neg, *value;
 } supply_t;
 
-static int comp_id;
-
 /* Funct supply.N.update: copy and invert the inputs. */
 static void supply_update(void *arg, long period)
 {
@@ -33,10 +32,12 @@ static void supply_update(void *arg, long period)
     *s->variable_neg = -*s->value;
 }
 
-/* Create the pins and funct of channel n. */
-static int supply_export(supply_t *s, int n)
+/* Create the pins and funct of channel n in component comp_id. */
+static int supply_export(int comp_id, int n)
 {
     char name[HAL_NAME_LEN + 1];
+    supply_t *s = hal_malloc(sizeof(*s));
+    if (!s) return -ENOMEM;
     int r = hal_pin_bit_newf(HAL_OUT, &s->q, comp_id, "supply.%d.q", n);
     if (r == 0) r = hal_pin_bit_newf(HAL_OUT, &s->q_not, comp_id, "supply.%d._q", n);
     if (r == 0) r = hal_pin_float_newf(HAL_OUT, &s->variable, comp_id, "supply.%d.variable", n);
@@ -52,29 +53,16 @@ static int supply_export(supply_t *s, int n)
 /* Create num_chan supplies. */
 int rtapi_app_main(void)
 {
-    int r = 0;
-    supply_t *s;
     if (num_chan < 1 || num_chan > SUPPLY_MAX_CHAN) {
         rtapi_print_msg(RTAPI_MSG_ERR, "SUPPLY: ERROR: invalid num_chan: %d (must be 1..%d)\n",
                         num_chan, SUPPLY_MAX_CHAN);
         return -EINVAL;
     }
-    comp_id = hal_init("supply");
-    if (comp_id < 0) return comp_id;
-    s = hal_malloc(num_chan * sizeof(*s));
-    if (!s) r = -ENOMEM;
-    for (int i = 0; i < num_chan && r == 0; i++)
-        r = supply_export(&s[i], i);
-    if (r) {
-        hal_exit(comp_id);
-        return r;
-    }
-    hal_ready(comp_id);
-    return 0;
+    return comp_setup("supply", num_chan, supply_export);
 }
 
 /* Remove the component. */
 void rtapi_app_exit(void)
 {
-    hal_exit(comp_id);
+    comp_teardown();
 }

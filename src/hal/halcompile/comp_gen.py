@@ -59,20 +59,26 @@ def gen_struct(comp, out):
     if comp.uses_personality:
         out.append('    int personality;')
     for item in comp.items:
-        if item.kind == 'pin':
-            dim = '[%d]' % item.size if item.size is not None else ''
-            out.append('    %s *%s%s;' % (c_type(item), item.field, dim))
-        elif item.kind == 'param':
-            dim = '[%d]' % item.size if item.size is not None else ''
-            out.append('    %s %s%s;' % (c_type(item), item.field, dim))
-        elif item.kind == 'variable':
-            dim = '[%d]' % item.size if item.size is not None else ''
-            out.append('    %s %s%s;' % (item.type, item.field, dim))
+        member = _struct_member(item)
+        if member:
+            out.append(member)
     if comp.option('data'):
         out.append('    void *_data;')
     out.append('};')
     out.append('static struct __comp_state *__comp_first_inst = 0, *__comp_last_inst = 0;')
     out.append('')
+
+
+def _struct_member(item):
+    """Instance-struct member line of a pin, param or variable; None for other items."""
+    dim = '[%d]' % item.size if item.size is not None else ''
+    if item.kind == 'pin':
+        return '    %s *%s%s;' % (c_type(item), item.field, dim)
+    if item.kind == 'param':
+        return '    %s %s%s;' % (c_type(item), item.field, dim)
+    if item.kind == 'variable':
+        return '    %s %s%s;' % (item.type, item.field, dim)
+    return None
 
 
 def gen_prototypes(comp, out):

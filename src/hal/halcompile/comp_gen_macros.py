@@ -3,44 +3,38 @@
 UNUSED = '__attribute__((unused))'
 
 
+def _access(item):
+    """Macro argument list, set-macro arguments and index for a scalar or an array item."""
+    if item.size is None:
+        return '', 'v', ''
+    return '(i)', 'i, v', '[i]'
+
+
 def pin_macros(item):
     """Macro lines for one pin."""
     n, f = item.cname, item.field
     ro = item.dir == 'in'
-    if item.size is None:
-        ref = '(*__comp_inst->%s)' % f
-        lines = ['#define %s_ptr (__comp_inst->%s)' % (n, f)]
-        if item.newapi:
-            lines.append('#define %s (0+%s)' % (n, ref))
-            if not ro:
-                lines.append('#define %s_set(v) (%s = (v))' % (n, ref))
-        else:
-            lines.append('#define %s %s' % (n, '(0+%s)' % ref if ro else ref))
-        return lines
-    ref = '(*(__comp_inst->%s[i]))' % f
-    lines = ['#define %s_ptr(i) (__comp_inst->%s[i])' % (n, f)]
+    args, set_args, index = _access(item)
+    ref = '(*(__comp_inst->%s[i]))' % f if index else '(*__comp_inst->%s)' % f
+    lines = ['#define %s_ptr%s (__comp_inst->%s%s)' % (n, args, f, index)]
     if item.newapi:
-        lines.append('#define %s(i) (0+%s)' % (n, ref))
+        lines.append('#define %s%s (0+%s)' % (n, args, ref))
         if not ro:
-            lines.append('#define %s_set(i, v) (%s = (v))' % (n, ref))
+            lines.append('#define %s_set(%s) (%s = (v))' % (n, set_args, ref))
     else:
-        lines.append('#define %s(i) %s' % (n, '(0+%s)' % ref if ro else ref))
+        lines.append('#define %s%s %s' % (n, args, '(0+%s)' % ref if ro else ref))
     return lines
 
 
 def param_macros(item):
     """Macro lines for one param."""
     n, f = item.cname, item.field
-    if item.size is None:
-        ref = '(__comp_inst->%s)' % f
-        if item.newapi:
-            return ['#define %s (0+%s)' % (n, ref), '#define %s_set(v) (%s = (v))' % (n, ref)]
-        return ['#define %s %s' % (n, ref)]
-    ref = '(__comp_inst->%s[i])' % f
+    args, set_args, index = _access(item)
+    ref = '(__comp_inst->%s%s)' % (f, index)
     if item.newapi:
-        return ['#define %s(i) (0+%s)' % (n, ref),
-                '#define %s_set(i, v) (%s = (v))' % (n, ref)]
-    return ['#define %s(i) %s' % (n, ref)]
+        return ['#define %s%s (0+%s)' % (n, args, ref),
+                '#define %s_set(%s) (%s = (v))' % (n, set_args, ref)]
+    return ['#define %s%s %s' % (n, args, ref)]
 
 
 def hook_macros(comp):

@@ -52,6 +52,13 @@ def gen_pers_note(comp, out, pad):
                                                 MAX_PERSONALITIES, MAX_PERSONALITIES))
 
 
+def gen_export_call(comp, out, pad):
+    """Export instance i named buf, returning from the loop function on failure."""
+    gen_pers_note(comp, out, pad)
+    out.append(pad + 'r = export(buf, %s);' % export_args(comp, 'i'))
+    out.append(pad + 'if (r != 0) return r;')
+
+
 def gen_names_loop(comp, out):
     """Create one instance per comma-separated entry of names=."""
     out.append('static int __comp_export_names(void) {')
@@ -61,9 +68,7 @@ def gen_names_loop(comp, out):
     out.append('    for (k = 0; ; k++) {')
     out.append("        if (names[k] == ',' || names[k] == '\\0') {")
     out.append("            buf[j] = '\\0';")
-    gen_pers_note(comp, out, '            ')
-    out.append('            r = export(buf, %s);' % export_args(comp, 'i'))
-    out.append('            if (r != 0) return r;')
+    gen_export_call(comp, out, '            ')
     out.append("            if (names[k] == '\\0') break;")
     out.append('            j = 0;')
     out.append('            i++;')
@@ -90,9 +95,7 @@ def gen_count_loop(comp, out):
     out.append('    int i, r;')
     out.append('    for (i = 0; i < n; i++) {')
     out.append('        rtapi_snprintf(buf, sizeof(buf), "%s.%%d", i);' % comp.prefix_base)
-    gen_pers_note(comp, out, '        ')
-    out.append('        r = export(buf, %s);' % export_args(comp, 'i'))
-    out.append('        if (r != 0) return r;')
+    gen_export_call(comp, out, '        ')
     out.append('    }')
     out.append('    return 0;')
     out.append('}')
@@ -184,23 +187,28 @@ def gen_app_main(comp, out):
     out.append('')
 
 
+# C helper of a userspace main(): remove "key<value>" from argv, returning the value.
+TAKE_ARG_C = """\
+static int __comp_take_arg(int *argc, char **argv, const char *key, char **val) {
+    int i, n = strlen(key);
+    for (i = 1; i < *argc; i++) {
+        if (strncmp(argv[i], key, n) == 0) {
+            *val = argv[i] + n;
+            for (; i < *argc; i++) argv[i] = argv[i + 1];
+            (*argc)--;
+            return 1;
+        }
+    }
+    return 0;
+}"""
+
+
 def gen_user_main(comp, out):
     """main() of a userspace component."""
     out.append('void user_mainloop(void);')
     if comp.option('userinit'):
         out.append('void userinit(int argc, char **argv);')
-    out.append('static int __comp_take_arg(int *argc, char **argv, const char *key, char **val) {')
-    out.append('    int i, n = strlen(key);')
-    out.append('    for (i = 1; i < *argc; i++) {')
-    out.append('        if (strncmp(argv[i], key, n) == 0) {')
-    out.append('            *val = argv[i] + n;')
-    out.append('            for (; i < *argc; i++) argv[i] = argv[i + 1];')
-    out.append('            (*argc)--;')
-    out.append('            return 1;')
-    out.append('        }')
-    out.append('    }')
-    out.append('    return 0;')
-    out.append('}')
+    out.extend(TAKE_ARG_C.split('\n'))
     out.append('int main(int argc, char **argv) {')
     out.append('    char *v;')
     if not comp.singleton:

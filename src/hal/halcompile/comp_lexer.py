@@ -7,6 +7,7 @@ class CompError(Exception):
     """A grammar or semantic error at a position of the .comp file."""
 
     def __init__(self, msg, line=0, col=None, src_line=None):
+        """Remember the message and where it happened (line, column, source text)."""
         super().__init__(msg)
         self.msg = msg
         self.line = line
@@ -26,12 +27,14 @@ class Token:
     """One lexical token: kind is 'name', 'number', 'string' or 'punct'."""
 
     def __init__(self, kind, text, value, pos):
+        """Remember kind, source text, parsed value and position."""
         self.kind = kind
         self.text = text
         self.value = value
         self.pos = pos
 
     def __repr__(self):
+        """Short form for debugging."""
         return 'Token(%s,%r)' % (self.kind, self.text)
 
 
@@ -61,6 +64,7 @@ class Lexer:
     """Produces tokens from the text, skipping whitespace and comments."""
 
     def __init__(self, text):
+        """Start at the beginning of text."""
         self.text = text
         self.pos = 0
 

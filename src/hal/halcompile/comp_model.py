@@ -40,6 +40,7 @@ class Item:
 
     def __init__(self, kind, name, htype, direction, newapi=False, size=None,
                  size_expr=None, line=0):
+        """Record one declaration as parsed."""
         self.kind = kind
         self.name = name
         self.type = htype
@@ -77,6 +78,7 @@ class Component:
     """Everything halcompile knows about one .comp file."""
 
     def __init__(self, path):
+        """An empty component read from path."""
         self.path = path
         self.name = None
         self.doc = None
@@ -104,22 +106,27 @@ class Component:
 
     @property
     def pins(self):
+        """The pins, in declaration order."""
         return self.of_kind('pin')
 
     @property
     def params(self):
+        """The params, in declaration order."""
         return self.of_kind('param')
 
     @property
     def functions(self):
+        """The functions, in declaration order."""
         return self.of_kind('function')
 
     @property
     def variables(self):
+        """The instance variables, in declaration order."""
         return self.of_kind('variable')
 
     @property
     def modparams(self):
+        """The module parameters, in declaration order."""
         return self.of_kind('modparam')
 
     def option(self, name, default=None):
@@ -133,10 +140,12 @@ class Component:
 
     @property
     def userspace(self):
+        """True for a userspace (non-realtime) component."""
         return bool(self.option('userspace', False))
 
     @property
     def singleton(self):
+        """True when the component has exactly one instance."""
         return bool(self.option('singleton') or self.option('homemod')
                     or self.option('tpmod'))
 
@@ -147,10 +156,12 @@ class Component:
 
     @property
     def prefix_base(self):
+        """HAL name prefix of the instances (hal_ stripped, _ as -)."""
         return hal_prefix_name(self.name)
 
     @property
     def license(self):
+        """First line of the license declaration."""
         return self.docs['license'][0].split('\n')[0]
 
     def resolve_includes(self, directory):

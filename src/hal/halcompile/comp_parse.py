@@ -25,6 +25,7 @@ class Parser:
     """Recursive-descent parser over the Lexer's tokens."""
 
     def __init__(self, text, comp):
+        """Parse text into comp, reading the first token."""
         self.lex = Lexer(text)
         self.comp = comp
         self.tok = self.lex.next()

@@ -1,9 +1,10 @@
 #!/bin/bash
-# Every component of src/hal/components (.comp, hand-written .c, doc/*.comp) has a man
+# Every component of src/hal/components (.comp, hand-written module .c, doc/*.comp) has a man
 # page share/man/man9/NAME.9 made by halcompile --document, with its NAME section.
 cd "$EMC2_HOME" || exit 1
 n=0
-for src in src/hal/components/*.comp src/hal/components/*.c src/hal/components/doc/*.comp; do
+modules=$(grep -l '^int rtapi_app_main' src/hal/components/*.c)
+for src in src/hal/components/*.comp $modules src/hal/components/doc/*.comp; do
     name=$(basename "${src%.*}")
     page=share/man/man9/$name.9
     if ! grep -q "^\.SH NAME" "$page" 2>/dev/null; then
@@ -14,7 +15,7 @@ for src in src/hal/components/*.comp src/hal/components/*.c src/hal/components/d
         n=$((n + 1))
     fi
 done
-for src in src/hal/components/*.c; do
+for src in $modules; do
     [ -e "src/hal/components/doc/$(basename "${src%.c}").comp" ] ||
         echo "no documentation source for $src"
 done

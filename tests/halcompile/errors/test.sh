@@ -13,26 +13,23 @@ try() {
     [ -e "$name.c" ] && echo "$name.c left behind"
     rm -f "$name.c"
 }
-try badarr <<'X'
-component badarr;
-pin out float out[3];
-function _;
-license "GPL";
-;;
-X
-try twohash <<'X'
-component twohash;
-pin out float out-#-#[3];
-function _;
-license "GPL";
-;;
-X
-try scalarhash <<'X'
-component scalarhash;
-pin out float out-#;
-function _;
-license "GPL";
-;;
+# Plain components: "component NAME;", the declarations, "function _;", a license, no code.
+# One line per case: NAME|declaration|declaration...
+while IFS='|' read -ra f; do
+    { echo "component ${f[0]};"; printf '%s\n' "${f[@]:1}" 'function _;' 'license "GPL";' ';;'; } |
+        try "${f[0]}"
+done <<'X'
+badarr|pin out float out[3];
+twohash|pin out float out-#-#[3];
+scalarhash|pin out float out-#;
+dup|pin out float out;|param rw float out;
+reserved|pin out float comp_id;
+nopins|param rw float x;
+userfunct|pin out float out;|option userspace yes;
+dupoption|pin out float out;|option singleton yes;|option singleton no;
+baddir|pin sideways float out;
+badtype|pin in complex z;
+missingsemi|pin in float x
 X
 try mismatch <<'X'
 component othername;
@@ -48,28 +45,6 @@ function _;
 ;;
 out = 1;
 X
-try dup <<'X'
-component dup;
-pin out float out;
-param rw float out;
-function _;
-license "GPL";
-;;
-X
-try reserved <<'X'
-component reserved;
-pin out float comp_id;
-function _;
-license "GPL";
-;;
-X
-try nopins <<'X'
-component nopins;
-param rw float x;
-function _;
-license "GPL";
-;;
-X
 try twofuncts <<'X'
 component twofuncts;
 pin out float out;
@@ -79,47 +54,9 @@ license "GPL";
 ;;
 out = 1;
 X
-try userfunct <<'X'
-component userfunct;
-pin out float out;
-function _;
-option userspace yes;
-license "GPL";
-;;
-X
-try dupoption <<'X'
-component dupoption;
-pin out float out;
-option singleton yes;
-option singleton no;
-function _;
-license "GPL";
-;;
-X
-try baddir <<'X'
-component baddir;
-pin sideways float out;
-function _;
-license "GPL";
-;;
-X
-try badtype <<'X'
-component badtype;
-pin in complex z;
-function _;
-license "GPL";
-;;
-X
 try unterminated <<'X'
 component unterminated;
 pin in float x "no end
-;;
-X
-try missingsemi <<'X'
-component missingsemi;
-pin in float x
-function _;
-license "GPL";
 ;;
 X
 try fpwarn <<'X'
@@ -139,21 +76,21 @@ license "GPL";
 ;;
 out = 1;
 X
-echo "== -o with --compile"
-halcompile --compile -o x.c fpwarn.comp 2>&1; echo "exit $?"
-echo "== -o with two inputs"
-halcompile -o x.c fpwarn.comp userinit.comp 2>&1; echo "exit $?"
-echo "== preprocess of a .c file"
+# run TITLE COMMAND...: show the title, the command's messages and its exit status
+run() {
+    echo "== $1"; shift
+    "$@" 2>&1
+    echo "exit $?"
+}
+run "-o with --compile" halcompile --compile -o x.c fpwarn.comp
+run "-o with two inputs" halcompile -o x.c fpwarn.comp userinit.comp
 echo "int x;" > plain.c
-halcompile plain.c 2>&1; echo "exit $?"
+run "preprocess of a .c file" halcompile plain.c
 echo "== unknown option"
 halcompile --bogus 2>/dev/null | head -1; echo "exit ${PIPESTATUS[0]}"
 echo "== help"
 halcompile --help | head -1; echo "exit ${PIPESTATUS[0]}"
-echo "== missing file"
-halcompile nosuch.comp 2>&1; echo "exit $?"
-echo "== bad personality count"
-halcompile -P x fpwarn.comp 2>&1; echo "exit $?"
-echo "== array size that is not an integer"
+run "missing file" halcompile nosuch.comp
+run "bad personality count" halcompile -P x fpwarn.comp
 printf 'component badsize;\npin out float out-#[2.5];\nfunction _;\nlicense "GPL";\n;;\n' > badsize.comp
-halcompile badsize.comp 2>&1; echo "exit $?"
+run "array size that is not an integer" halcompile badsize.comp

@@ -13,18 +13,26 @@ static Pose pose_of(const CanonPose &p)
     return {p.x, p.y, p.z, p.a, p.b, p.c, p.u, p.v, p.w};
 }
 
+// a held straight move of the given line: compensated start, start direction, end pose
+static HeldMove held_line(HeldMove::Kind kind, int line, Vec2 start, Vec2 dir, const Pose &end)
+{
+    HeldMove m;
+    m.kind = kind;
+    m.line = line;
+    m.start = start;
+    m.dir = dir;
+    m.end = end;
+    return m;
+}
+
 // a held arc of the given line: center, direction, untrimmed and trimmed start, end pose
 static HeldMove held_arc(int line, Vec2 center, int rotation, Vec2 arc_from, Vec2 start,
                          const Pose &end)
 {
-    HeldMove m;
-    m.kind = HeldMove::ARC;
-    m.line = line;
+    HeldMove m = held_line(HeldMove::ARC, line, start, Vec2{}, end);
     m.center = center;
     m.rotation = rotation;
     m.arc_from = arc_from;
-    m.start = start;
-    m.end = end;
     return m;
 }
 
@@ -155,11 +163,7 @@ void CompEngine::line_move(HeldMove::Kind kind, int line, const Pose &end)
     }
     Vec2 s2 = plane_point(ax_, s_.current), e2 = plane_point(ax_, end);
     if (distance(s2, e2) < 1e-12) {
-        HeldMove m;
-        m.kind = kind;
-        m.line = line;
-        m.end = with_plane_point(ax_, end, path_end_);
-        m.start = path_end_;
+        HeldMove m = held_line(kind, line, path_end_, Vec2{}, with_plane_point(ax_, end, path_end_));
         m.in_plane = false;
         queue_.push_move(m);
         tool_end_ = m.end;
@@ -174,13 +178,8 @@ void CompEngine::line_move(HeldMove::Kind kind, int line, const Pose &end)
     j.end = e2 + radius_ * n;
     j.shape = shape;
     j.corner_point = s2;
-    HeldMove m;
-    m.kind = kind;
-    m.line = line;
-    m.dir = shape.d;
-    m.start = corner(j);
-    m.end = with_plane_point(ax_, end, j.end);
-    hold(m, shape.d, 0, shape);
+    hold(held_line(kind, line, corner(j), shape.d, with_plane_point(ax_, end, j.end)), shape.d, 0,
+         shape);
 }
 
 // entry line: ends at the programmed end offset perpendicular to the move
@@ -201,12 +200,8 @@ void CompEngine::entry_line(HeldMove::Kind kind, int line, const Pose &end)
     double theta = angle_of(e2 - s2);
     Vec2 e_off = e2 + radius_ * line_normal(theta);
     PathShape shape = line_shape(e_off, polar(theta));
-    HeldMove m;
-    m.kind = kind;
-    m.line = line;
-    m.start = s2;
-    m.dir = polar(angle_of(e_off - s2));
-    m.end = with_plane_point(ax_, end, e_off);
+    HeldMove m = held_line(kind, line, s2, polar(angle_of(e_off - s2)),
+                           with_plane_point(ax_, end, e_off));
     flush_all();
     hold(m, polar(theta), 0, shape);
 }
