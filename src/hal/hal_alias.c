@@ -1,5 +1,6 @@
 /* hal_alias.c: pin and param aliases (spec/hal.md §11): rename, remember the original. */
 #include "hal_internal.h"
+#include <stdio.h>
 
 /* Where a pin/param keeps its name and alias record; pins also re-sort in their signal. */
 typedef struct {
@@ -62,14 +63,13 @@ static int hal_alias_set(hal_alias_target_t *t, const char *alias)
 /* Checks shared by pin and param aliasing. */
 static int hal_alias_precheck(const char *what, const char *name, const char *alias)
 {
-    if (!hal_data) {
-        HAL_ERR("%s_alias called before init\n", what);
-        return -EINVAL;
-    }
-    if (hal_data->lock & HAL_LOCK_CONFIG) {
-        HAL_ERR("%s_alias called while HAL locked\n", what);
-        return -EPERM;
-    }
+    char func[16];
+    int rc;
+
+    snprintf(func, sizeof func, "%s_alias", what);
+    rc = halpr_check_unlocked(func, HAL_LOCK_CONFIG, "%s called while HAL locked");
+    if (rc < 0)
+        return rc;
     if (!name) {
         HAL_ERR("%s_alias called without a name\n", what);
         return -EINVAL;
@@ -81,27 +81,49 @@ static int hal_alias_precheck(const char *what, const char *name, const char *al
     return 0;
 }
 
-/* Alias (or with NULL un-alias) a pin. */
-int hal_pin_alias(const char *pin_name, const char *alias)
+/* Finds a pin (is_pin) or param by name or alias, as a list node. */
+static hal_node_t *hal_alias_find(int is_pin, const char *name)
 {
+    if (is_pin)
+        return (hal_node_t *)halpr_find_pin_by_name(name);
+    return (hal_node_t *)halpr_find_param_by_name(name);
+}
+
+/* Describes where a pin (is_pin) or param node keeps its name and alias record. */
+static void hal_alias_target_init(hal_alias_target_t *t, int is_pin, hal_node_t *node)
+{
+    if (is_pin) {
+        hal_pin_t *pin = (hal_pin_t *)node;
+        *t = (hal_alias_target_t){&hal_data->pins, &hal_data->pin_alias_list,
+                                  &pin->oldname, node, pin};
+    } else {
+        hal_param_t *param = (hal_param_t *)node;
+        *t = (hal_alias_target_t){&hal_data->params, &hal_data->param_alias_list,
+                                  &param->oldname, node, NULL};
+    }
+}
+
+/* Alias (or with NULL un-alias) a pin (is_pin) or param under the HAL mutex. */
+static int hal_alias_apply(int is_pin, const char *name, const char *alias)
+{
+    const char *what = is_pin ? "pin" : "param";
     hal_alias_target_t t;
-    hal_pin_t *pin, *other;
-    int rc = hal_alias_precheck("pin", pin_name, alias);
+    hal_node_t *node, *other;
+    int rc = hal_alias_precheck(what, name, alias);
 
     if (rc < 0)
         return rc;
     halpr_mutex_get();
-    other = alias ? halpr_find_pin_by_name(alias) : NULL;
-    pin = halpr_find_pin_by_name(pin_name);
-    if (!pin) {
-        HAL_ERR("pin '%s' not found\n", pin_name);
+    other = alias ? hal_alias_find(is_pin, alias) : NULL;
+    node = hal_alias_find(is_pin, name);
+    if (!node) {
+        HAL_ERR("%s '%s' not found\n", what, name);
         rc = -EINVAL;
-    } else if (other && other != pin) {
-        HAL_ERR("duplicate pin/alias name '%s'\n", alias);
+    } else if (other && other != node) {
+        HAL_ERR("duplicate %s/alias name '%s'\n", is_pin ? "pin" : "parameter", alias);
         rc = -EINVAL;
     } else {
-        t = (hal_alias_target_t){&hal_data->pins, &hal_data->pin_alias_list,
-                                 &pin->oldname, (hal_node_t *)pin, pin};
+        hal_alias_target_init(&t, is_pin, node);
         if (!alias)
             hal_alias_restore(&t);
         else
@@ -111,32 +133,14 @@ int hal_pin_alias(const char *pin_name, const char *alias)
     return rc;
 }
 
+/* Alias (or with NULL un-alias) a pin. */
+int hal_pin_alias(const char *pin_name, const char *alias)
+{
+    return hal_alias_apply(1, pin_name, alias);
+}
+
 /* Alias (or with NULL un-alias) a param. */
 int hal_param_alias(const char *param_name, const char *alias)
 {
-    hal_alias_target_t t;
-    hal_param_t *param, *other;
-    int rc = hal_alias_precheck("param", param_name, alias);
-
-    if (rc < 0)
-        return rc;
-    halpr_mutex_get();
-    other = alias ? halpr_find_param_by_name(alias) : NULL;
-    param = halpr_find_param_by_name(param_name);
-    if (!param) {
-        HAL_ERR("param '%s' not found\n", param_name);
-        rc = -EINVAL;
-    } else if (other && other != param) {
-        HAL_ERR("duplicate parameter/alias name '%s'\n", alias);
-        rc = -EINVAL;
-    } else {
-        t = (hal_alias_target_t){&hal_data->params, &hal_data->param_alias_list,
-                                 &param->oldname, (hal_node_t *)param, NULL};
-        if (!alias)
-            hal_alias_restore(&t);
-        else
-            rc = hal_alias_set(&t, alias);
-    }
-    halpr_mutex_give();
-    return rc;
+    return hal_alias_apply(0, param_name, alias);
 }

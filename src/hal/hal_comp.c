@@ -21,6 +21,20 @@ int halpr_comp_check(int comp_id, const char *what, hal_comp_t **out)
     return 0;
 }
 
+/* Take the HAL mutex and find a component; on failure log, release and return NULL. */
+static hal_comp_t *hal_comp_lock_find(int comp_id)
+{
+    hal_comp_t *comp;
+
+    halpr_mutex_get();
+    comp = halpr_find_comp_by_id(comp_id);
+    if (!comp) {
+        halpr_mutex_give();
+        HAL_ERR("component %d not found\n", comp_id);
+    }
+    return comp;
+}
+
 /* Create the shm record of a new component; mutex held. */
 static int hal_comp_create(const char *name, int id)
 {
@@ -102,13 +116,9 @@ int hal_exit(int comp_id)
         HAL_ERR("exit called before init\n");
         return -EINVAL;
     }
-    halpr_mutex_get();
-    comp = halpr_find_comp_by_id(comp_id);
-    if (!comp) {
-        halpr_mutex_give();
-        HAL_ERR("component %d not found\n", comp_id);
+    comp = hal_comp_lock_find(comp_id);
+    if (!comp)
         return -EINVAL;
-    }
     halpr_comp_free_items(comp);
     halpr_index_remove(&hal_data->comps, (hal_node_t *)comp);
     halpr_obj_free(HAL_KIND_COMP, comp);
@@ -183,15 +193,11 @@ int hal_set_constructor(int comp_id, hal_constructor_t make)
 
     if (!hal_data)
         return -EINVAL;
-    halpr_mutex_get();
-    comp = halpr_find_comp_by_id(comp_id);
-    if (comp)
-        comp->make = make;
-    halpr_mutex_give();
-    if (!comp) {
-        HAL_ERR("component %d not found\n", comp_id);
+    comp = hal_comp_lock_find(comp_id);
+    if (!comp)
         return -EINVAL;
-    }
+    comp->make = make;
+    halpr_mutex_give();
     return 0;
 }
 
@@ -238,13 +244,9 @@ int hal_reattach_for_fork(int comp_id)
 
     if (!hal_data)
         return -EINVAL;
-    halpr_mutex_get();
-    comp = halpr_find_comp_by_id(comp_id);
-    if (!comp) {
-        halpr_mutex_give();
-        HAL_ERR("component %d not found\n", comp_id);
+    comp = hal_comp_lock_find(comp_id);
+    if (!comp)
         return -EINVAL;
-    }
     lib_id = rtapi_init("HAL_LIB");
     new_id = rtapi_init(comp->name);
     if (lib_id < 0 || new_id < 0) {

@@ -15,12 +15,16 @@ extern int hal_proc_comps;       /* components created by this process */
 #define HAL_ERR(...) rtapi_print_msg(RTAPI_MSG_ERR, "HAL: ERROR: " __VA_ARGS__)
 #define HAL_LIB_ERR(...) rtapi_print_msg(RTAPI_MSG_ERR, "HAL_LIB: ERROR: " __VA_ARGS__)
 
+/* hal_lock.c */
+int halpr_check_unlocked(const char *what, unsigned lock_bits, const char *locked_fmt);
+
 /* hal_memory.c */
 int hal_shm_attach(void);
 void hal_shm_detach(void);
 void *halpr_obj_alloc(int kind);
 void halpr_obj_free(int kind, void *obj);
 void *halpr_malloc(long size);
+int hal_lib_attach(void);
 int hal_attach_user(void);
 
 /* hal_index.c */
@@ -39,6 +43,12 @@ int halpr_pin_create(const char *name, hal_type_t type, hal_pin_dir_t dir, void 
 void halpr_pin_free(hal_pin_t *pin);
 void halpr_param_free(hal_param_t *param);
 int halpr_name_fmt(char *buf, const char *fmt, va_list ap);
+
+/* hal_item_new.c (is_pin selects pin or param; dir is the pin or param direction) */
+int halpr_item_new_va(int is_pin, hal_type_t type, int dir, void *addr, int comp_id,
+                      const char *fmt, va_list ap);
+int halpr_item_new_ref(int is_pin, hal_type_t type, int dir, void **ref, int comp_id,
+                       const char *fmt, va_list ap);
 
 /* hal_signal.c */
 void halpr_unlink_pin(hal_pin_t *pin);

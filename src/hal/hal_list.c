@@ -1,5 +1,6 @@
 /* hal_list.c: name lookup (halpr_find_*), list walks for tools, component info and statistics. */
 #include "hal_internal.h"
+#include <stddef.h>
 
 /* Component by name, or NULL. */
 hal_comp_t *halpr_find_comp_by_name(const char *name)
@@ -61,34 +62,39 @@ hal_thread_t *halpr_find_thread_by_name(const char *name)
     return (hal_thread_t *)halpr_index_find(&hal_data->threads, name);
 }
 
+/* Next node of idx after start (NULL = first) whose int at owner_off is owner's offset. */
+static hal_node_t *halpr_find_node_by_owner(const hal_index_t *idx, size_t owner_off,
+                                            hal_comp_t *owner, hal_node_t *start)
+{
+    int want = SHMOFF(owner);
+    hal_node_t *n = HALPR_AT(hal_node_t, start ? start->next_ptr : idx->list_ptr);
+
+    while (n && *(const int *)((const char *)n + owner_off) != want)
+        n = HALPR_AT(hal_node_t, n->next_ptr);
+    return n;
+}
+
 /* Next pin after start (NULL = first) owned by owner. */
 hal_pin_t *halpr_find_pin_by_owner(hal_comp_t *owner, hal_pin_t *start)
 {
-    int want = SHMOFF(owner);
-    hal_pin_t *p = start ? halpr_next_pin(start) : halpr_first_pin();
-    while (p && p->owner_ptr != want)
-        p = halpr_next_pin(p);
-    return p;
+    return (hal_pin_t *)halpr_find_node_by_owner(&hal_data->pins, offsetof(hal_pin_t, owner_ptr),
+                                                 owner, (hal_node_t *)start);
 }
 
 /* Next param after start (NULL = first) owned by owner. */
 hal_param_t *halpr_find_param_by_owner(hal_comp_t *owner, hal_param_t *start)
 {
-    int want = SHMOFF(owner);
-    hal_param_t *p = start ? halpr_next_param(start) : halpr_first_param();
-    while (p && p->owner_ptr != want)
-        p = halpr_next_param(p);
-    return p;
+    return (hal_param_t *)halpr_find_node_by_owner(&hal_data->params,
+                                                   offsetof(hal_param_t, owner_ptr),
+                                                   owner, (hal_node_t *)start);
 }
 
 /* Next funct after start (NULL = first) owned by owner. */
 hal_funct_t *halpr_find_funct_by_owner(hal_comp_t *owner, hal_funct_t *start)
 {
-    int want = SHMOFF(owner);
-    hal_funct_t *f = start ? halpr_next_funct(start) : halpr_first_funct();
-    while (f && f->owner_ptr != want)
-        f = halpr_next_funct(f);
-    return f;
+    return (hal_funct_t *)halpr_find_node_by_owner(&hal_data->functs,
+                                                   offsetof(hal_funct_t, owner_ptr),
+                                                   owner, (hal_node_t *)start);
 }
 
 /* Walk any list of named nodes, calling cb with per-node type/dir extracted by `get`. */

@@ -144,13 +144,11 @@ void hal_shm_detach(void)
     hal_shm_id = -1;
 }
 
-/* First attach of a user process: costs one id (library attach) like LinuxCNC. */
-int hal_attach_user(void)
+/* Library attach: one RTAPI id named HAL_LIB plus the HAL memory mapping. */
+int hal_lib_attach(void)
 {
     int id, rc;
 
-    if (hal_data)
-        return 0;
     id = rtapi_init("HAL_LIB");
     if (id < 0) {
         HAL_ERR("could not init RTAPI: %d\n", id);
@@ -163,6 +161,14 @@ int hal_attach_user(void)
     }
     hal_proc_lib_id = id;
     return 0;
+}
+
+/* First attach of a user process: costs one id (library attach) like LinuxCNC. */
+int hal_attach_user(void)
+{
+    if (hal_data)
+        return 0;
+    return hal_lib_attach();
 }
 
 /* Bump-allocate size bytes at a multiple of align (a power of two); NULL when full. */

@@ -112,14 +112,9 @@ int hal_param_set(const char *name, hal_type_t type, void *value_addr)
     hal_param_t *param;
     int rc = 0;
 
-    if (!hal_data) {
-        HAL_ERR("param_set called before init\n");
-        return -EINVAL;
-    }
-    if (hal_data->lock & HAL_LOCK_PARAMS) {
-        HAL_ERR("param_set called while HAL locked\n");
-        return -EPERM;
-    }
+    rc = halpr_check_unlocked("param_set", HAL_LOCK_PARAMS, "%s called while HAL locked");
+    if (rc < 0)
+        return rc;
     halpr_mutex_get();
     param = halpr_find_param_by_name(name);
     if (!param) {

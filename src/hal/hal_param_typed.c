@@ -3,24 +3,21 @@
 #include <stdarg.h>
 
 /* Classic constructors (caller supplies storage) and printf-style variants. */
-#define HAL_PARAM_NEW(T, TYPE, CT)                                                    \
-    int hal_param_##T##_new(const char *name, hal_param_dir_t dir, CT *data_addr,      \
-                            int comp_id)                                               \
-    {                                                                                  \
-        return hal_param_new(name, TYPE, dir, (void *)data_addr, comp_id);             \
-    }                                                                                  \
-    int hal_param_##T##_newf(hal_param_dir_t dir, CT *data_addr, int comp_id,          \
-                             const char *fmt, ...)                                     \
-    {                                                                                  \
-        char name[HAL_NAME_LEN + 1];                                                   \
-        va_list ap;                                                                    \
-        int rc;                                                                        \
-        va_start(ap, fmt);                                                             \
-        rc = halpr_name_fmt(name, fmt, ap);                                            \
-        va_end(ap);                                                                    \
-        if (rc < 0)                                                                    \
-            return rc;                                                                 \
-        return hal_param_new(name, TYPE, dir, (void *)data_addr, comp_id);             \
+#define HAL_PARAM_NEW(T, TYPE, CT)                                                 \
+    int hal_param_##T##_new(const char *name, hal_param_dir_t dir, CT *data_addr,  \
+                            int comp_id)                                           \
+    {                                                                              \
+        return hal_param_new(name, TYPE, dir, (void *)data_addr, comp_id);         \
+    }                                                                              \
+    int hal_param_##T##_newf(hal_param_dir_t dir, CT *data_addr, int comp_id,      \
+                             const char *fmt, ...)                                 \
+    {                                                                              \
+        va_list ap;                                                                \
+        int rc;                                                                    \
+        va_start(ap, fmt);                                                         \
+        rc = halpr_item_new_va(0, TYPE, dir, (void *)data_addr, comp_id, fmt, ap); \
+        va_end(ap);                                                                \
+        return rc;                                                                 \
     }
 
 HAL_PARAM_NEW(bit, HAL_BIT, hal_bit_t)
@@ -30,39 +27,19 @@ HAL_PARAM_NEW(s32, HAL_S32, hal_s32_t)
 HAL_PARAM_NEW(u64, HAL_U64, hal_u64_t)
 HAL_PARAM_NEW(s64, HAL_S64, hal_s64_t)
 
-/* New API core: allocate the value cell and create the param on it. */
-static int hal_param_new_ref(int comp_id, hal_type_t type, hal_param_dir_t dir, void **ref,
-                             const char *fmt, va_list ap)
-{
-    char name[HAL_NAME_LEN + 1];
-    void *cell;
-    int rc = halpr_name_fmt(name, fmt, ap);
-
-    if (rc < 0)
-        return rc;
-    cell = hal_malloc(sizeof(hal_data_u));
-    if (!cell)
-        return -ENOMEM;
-    rc = hal_param_new(name, type, dir, cell, comp_id);
-    if (rc < 0)
-        return rc;
-    *ref = cell;
-    return 0;
-}
-
 /* New API constructors: HAL allocates the cell, start value dflt. */
-#define HAL_PARAM_NEW_REF(T, TYPE, CT, DT)                                              \
-    int hal_param_new_##T(int comp_id, hal_param_dir_t dir, CT **ref, DT dflt,           \
-                          const char *fmt, ...)                                          \
-    {                                                                                    \
-        va_list ap;                                                                      \
-        int rc;                                                                          \
-        va_start(ap, fmt);                                                               \
-        rc = hal_param_new_ref(comp_id, TYPE, dir, (void **)ref, fmt, ap);               \
-        va_end(ap);                                                                      \
-        if (rc == 0)                                                                     \
-            **ref = dflt;                                                                \
-        return rc;                                                                       \
+#define HAL_PARAM_NEW_REF(T, TYPE, CT, DT)                                     \
+    int hal_param_new_##T(int comp_id, hal_param_dir_t dir, CT **ref, DT dflt, \
+                          const char *fmt, ...)                                \
+    {                                                                          \
+        va_list ap;                                                            \
+        int rc;                                                                \
+        va_start(ap, fmt);                                                     \
+        rc = halpr_item_new_ref(0, TYPE, dir, (void **)ref, comp_id, fmt, ap); \
+        va_end(ap);                                                            \
+        if (rc == 0)                                                           \
+            **ref = dflt;                                                      \
+        return rc;                                                             \
     }
 
 HAL_PARAM_NEW_REF(bool, HAL_BIT, hal_bit_t, bool)

@@ -3,24 +3,21 @@
 #include <stdarg.h>
 
 /* Classic constructors: caller supplies the pointer cell. */
-#define HAL_PIN_NEW(T, TYPE, CT)                                                     \
-    int hal_pin_##T##_new(const char *name, hal_pin_dir_t dir, CT **data_ptr_addr,    \
-                          int comp_id)                                                \
-    {                                                                                 \
-        return hal_pin_new(name, TYPE, dir, (void **)data_ptr_addr, comp_id);         \
-    }                                                                                 \
-    int hal_pin_##T##_newf(hal_pin_dir_t dir, CT **data_ptr_addr, int comp_id,        \
-                           const char *fmt, ...)                                      \
-    {                                                                                 \
-        char name[HAL_NAME_LEN + 1];                                                  \
-        va_list ap;                                                                   \
-        int rc;                                                                       \
-        va_start(ap, fmt);                                                            \
-        rc = halpr_name_fmt(name, fmt, ap);                                           \
-        va_end(ap);                                                                   \
-        if (rc < 0)                                                                   \
-            return rc;                                                                \
-        return hal_pin_new(name, TYPE, dir, (void **)data_ptr_addr, comp_id);         \
+#define HAL_PIN_NEW(T, TYPE, CT)                                                       \
+    int hal_pin_##T##_new(const char *name, hal_pin_dir_t dir, CT **data_ptr_addr,     \
+                          int comp_id)                                                 \
+    {                                                                                  \
+        return hal_pin_new(name, TYPE, dir, (void **)data_ptr_addr, comp_id);          \
+    }                                                                                  \
+    int hal_pin_##T##_newf(hal_pin_dir_t dir, CT **data_ptr_addr, int comp_id,         \
+                           const char *fmt, ...)                                       \
+    {                                                                                  \
+        va_list ap;                                                                    \
+        int rc;                                                                        \
+        va_start(ap, fmt);                                                             \
+        rc = halpr_item_new_va(1, TYPE, dir, (void *)data_ptr_addr, comp_id, fmt, ap); \
+        va_end(ap);                                                                    \
+        return rc;                                                                     \
     }
 
 HAL_PIN_NEW(bit, HAL_BIT, hal_bit_t)
@@ -31,39 +28,19 @@ HAL_PIN_NEW(u64, HAL_U64, hal_u64_t)
 HAL_PIN_NEW(s64, HAL_S64, hal_s64_t)
 HAL_PIN_NEW(port, HAL_PORT, hal_port_t)
 
-/* New API core: allocate the pointer cell, create the pin, hand out the cell. */
-static int hal_pin_new_ref(int comp_id, hal_type_t type, hal_pin_dir_t dir, void ***ref,
-                           const char *fmt, va_list ap)
-{
-    char name[HAL_NAME_LEN + 1];
-    void **cell;
-    int rc = halpr_name_fmt(name, fmt, ap);
-
-    if (rc < 0)
-        return rc;
-    cell = hal_malloc(sizeof(void *));
-    if (!cell)
-        return -ENOMEM;
-    rc = hal_pin_new(name, type, dir, cell, comp_id);
-    if (rc < 0)
-        return rc;
-    *ref = cell;
-    return 0;
-}
-
 /* New API constructors: start value dflt. */
-#define HAL_PIN_NEW_REF(T, TYPE, CT, DT)                                               \
-    int hal_pin_new_##T(int comp_id, hal_pin_dir_t dir, CT ***ref, DT dflt,             \
-                        const char *fmt, ...)                                           \
-    {                                                                                   \
-        va_list ap;                                                                     \
-        int rc;                                                                         \
-        va_start(ap, fmt);                                                              \
-        rc = hal_pin_new_ref(comp_id, TYPE, dir, (void ***)ref, fmt, ap);               \
-        va_end(ap);                                                                     \
-        if (rc == 0)                                                                    \
-            ***ref = dflt;                                                              \
-        return rc;                                                                      \
+#define HAL_PIN_NEW_REF(T, TYPE, CT, DT)                                       \
+    int hal_pin_new_##T(int comp_id, hal_pin_dir_t dir, CT ***ref, DT dflt,    \
+                        const char *fmt, ...)                                  \
+    {                                                                          \
+        va_list ap;                                                            \
+        int rc;                                                                \
+        va_start(ap, fmt);                                                     \
+        rc = halpr_item_new_ref(1, TYPE, dir, (void **)ref, comp_id, fmt, ap); \
+        va_end(ap);                                                            \
+        if (rc == 0)                                                           \
+            ***ref = dflt;                                                     \
+        return rc;                                                             \
     }
 
 HAL_PIN_NEW_REF(bool, HAL_BIT, hal_bit_t, bool)
@@ -80,7 +57,7 @@ int hal_pin_new_port(int comp_id, hal_pin_dir_t dir, hal_port_t ***ref, const ch
     int rc;
 
     va_start(ap, fmt);
-    rc = hal_pin_new_ref(comp_id, HAL_PORT, dir, (void ***)ref, fmt, ap);
+    rc = halpr_item_new_ref(1, HAL_PORT, dir, (void **)ref, comp_id, fmt, ap);
     va_end(ap);
     return rc;
 }

@@ -4,21 +4,13 @@
 /* Attach/create HAL memory as the RT process; costs one id (id 1 on a fresh instance). */
 int hal_rt_startup(void)
 {
-    int id, rc;
+    int rc;
 
     if (hal_proc_is_rt)
         return 0;
-    id = rtapi_init("HAL_LIB");
-    if (id < 0) {
-        HAL_ERR("could not init RTAPI: %d\n", id);
-        return id;
-    }
-    rc = hal_shm_attach();
-    if (rc < 0) {
-        rtapi_exit(id);
+    rc = hal_lib_attach();
+    if (rc < 0)
         return rc;
-    }
-    hal_proc_lib_id = id;
     hal_proc_is_rt = 1;
     hal_clock_calibrate();
     return 0;

@@ -54,15 +54,11 @@ void halpr_unlink_pin(hal_pin_t *pin)
 int hal_signal_new(const char *name, hal_type_t type)
 {
     hal_sig_t *sig;
+    int rc;
 
-    if (!hal_data) {
-        HAL_ERR("signal_new called before init\n");
-        return -EINVAL;
-    }
-    if (hal_data->lock & HAL_LOCK_CONFIG) {
-        HAL_ERR("signal_new called while HAL is locked\n");
-        return -EPERM;
-    }
+    rc = halpr_check_unlocked("signal_new", HAL_LOCK_CONFIG, "%s called while HAL is locked");
+    if (rc < 0)
+        return rc;
     if (!name || strlen(name) > HAL_NAME_LEN) {
         HAL_ERR("signal name '%s' is too long\n", name ? name : "");
         return -EINVAL;
@@ -94,15 +90,12 @@ int hal_signal_new(const char *name, hal_type_t type)
 int hal_signal_delete(const char *name)
 {
     hal_sig_t *sig;
+    int rc;
 
-    if (!hal_data) {
-        HAL_ERR("signal_delete called before init\n");
-        return -EINVAL;
-    }
-    if (hal_data->lock & HAL_LOCK_CONFIG) {
-        HAL_ERR("signal_delete called while HAL is locked\n");
-        return -EPERM;
-    }
+    rc = halpr_check_unlocked("signal_delete", HAL_LOCK_CONFIG,
+                              "%s called while HAL is locked");
+    if (rc < 0)
+        return rc;
     halpr_mutex_get();
     sig = halpr_find_sig_by_name(name);
     if (!sig) {
@@ -198,14 +191,9 @@ int hal_link(const char *pin_name, const char *sig_name)
     hal_sig_t *sig = NULL;
     int rc;
 
-    if (!hal_data) {
-        HAL_ERR("link called before init\n");
-        return -EINVAL;
-    }
-    if (hal_data->lock & HAL_LOCK_CONFIG) {
-        HAL_ERR("link called while HAL locked\n");
-        return -EPERM;
-    }
+    rc = halpr_check_unlocked("link", HAL_LOCK_CONFIG, "%s called while HAL locked");
+    if (rc < 0)
+        return rc;
     halpr_mutex_get();
     rc = hal_link_check(pin_name, sig_name, &pin, &sig);
     if (rc == 0)
@@ -218,15 +206,11 @@ int hal_link(const char *pin_name, const char *sig_name)
 int hal_unlink(const char *pin_name)
 {
     hal_pin_t *pin;
+    int rc;
 
-    if (!hal_data) {
-        HAL_ERR("unlink called before init\n");
-        return -EINVAL;
-    }
-    if (hal_data->lock & HAL_LOCK_CONFIG) {
-        HAL_ERR("unlink called while HAL locked\n");
-        return -EPERM;
-    }
+    rc = halpr_check_unlocked("unlink", HAL_LOCK_CONFIG, "%s called while HAL locked");
+    if (rc < 0)
+        return rc;
     halpr_mutex_get();
     pin = halpr_find_pin_by_name(pin_name);
     if (!pin) {

@@ -249,14 +249,10 @@ int hal_thread_delete(const char *name)
 /* Set the global run flag of all threads. */
 static int hal_threads_run(int run, const char *what)
 {
-    if (!hal_data) {
-        HAL_ERR("%s called before init\n", what);
-        return -EINVAL;
-    }
-    if (hal_data->lock & HAL_LOCK_RUN) {
-        HAL_ERR("%s called while HAL is locked\n", what);
-        return -EPERM;
-    }
+    int rc = halpr_check_unlocked(what, HAL_LOCK_RUN, "%s called while HAL is locked");
+
+    if (rc < 0)
+        return rc;
     __atomic_store_n(&hal_data->threads_running, run, __ATOMIC_RELEASE);
     return 0;
 }

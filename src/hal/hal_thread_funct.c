@@ -71,14 +71,10 @@ static int hal_addf_common(const char *funct_name, const char *thread_name, int 
     hal_funct_entry_t *e;
     int rc, index;
 
-    if (!hal_data) {
-        HAL_ERR("add_funct called before init\n");
-        return -EINVAL;
-    }
-    if (hal_data->lock & HAL_LOCK_CONFIG) {
-        HAL_ERR("add_funct_to_thread called while HAL is locked\n");
-        return -EPERM;
-    }
+    rc = halpr_check_unlocked("add_funct", HAL_LOCK_CONFIG,
+                              "add_funct_to_thread called while HAL is locked");
+    if (rc < 0)
+        return rc;
     halpr_mutex_get();
     rc = hal_addf_lookup(funct_name, thread_name, position, &f, &t);
     if (rc == 0 && init && t->init_done) {
@@ -161,14 +157,10 @@ int hal_del_funct_from_thread(const char *funct_name, const char *thread_name)
 {
     int rc;
 
-    if (!hal_data) {
-        HAL_ERR("del_funct called before init\n");
-        return -EINVAL;
-    }
-    if (hal_data->lock & HAL_LOCK_CONFIG) {
-        HAL_ERR("del_funct_from_thread called while HAL is locked\n");
-        return -EPERM;
-    }
+    rc = halpr_check_unlocked("del_funct", HAL_LOCK_CONFIG,
+                              "del_funct_from_thread called while HAL is locked");
+    if (rc < 0)
+        return rc;
     if (!thread_name) {
         HAL_ERR("missing thread name\n");
         return -EINVAL;

@@ -183,19 +183,23 @@ static int socket_address(struct sockaddr_un *addr)
     return (int)(offsetof(struct sockaddr_un, sun_path) + 1 + len);
 }
 
-/* Connect to this instance's master. */
-int rtapi_wire_connect(void)
+/* Opens a socket on this instance's address and connects (listen_on_it=0) or binds and listens. */
+static int socket_open(int listen_on_it)
 {
     struct sockaddr_un addr;
     int len = socket_address(&addr);
-    int fd;
+    int fd, rc;
 
     if (len < 0)
         return len;
     fd = socket(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0);
     if (fd < 0)
         return -errno;
-    if (connect(fd, (struct sockaddr *)&addr, (socklen_t)len) != 0) {
+    if (listen_on_it)
+        rc = bind(fd, (struct sockaddr *)&addr, (socklen_t)len) != 0 || listen(fd, 16) != 0;
+    else
+        rc = connect(fd, (struct sockaddr *)&addr, (socklen_t)len) != 0;
+    if (rc) {
         int err = errno;
         close(fd);
         return -err;
@@ -203,22 +207,14 @@ int rtapi_wire_connect(void)
     return fd;
 }
 
+/* Connect to this instance's master. */
+int rtapi_wire_connect(void)
+{
+    return socket_open(0);
+}
+
 /* Become this instance's master socket (fails when one is bound). */
 int rtapi_wire_listen(void)
 {
-    struct sockaddr_un addr;
-    int len = socket_address(&addr);
-    int fd;
-
-    if (len < 0)
-        return len;
-    fd = socket(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0);
-    if (fd < 0)
-        return -errno;
-    if (bind(fd, (struct sockaddr *)&addr, (socklen_t)len) != 0 || listen(fd, 16) != 0) {
-        int err = errno;
-        close(fd);
-        return -err;
-    }
-    return fd;
+    return socket_open(1);
 }

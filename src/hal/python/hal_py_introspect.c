@@ -127,49 +127,22 @@ static int append(PyObject *list, PyObject *item)
     return rc;
 }
 
-/* Walkers: append every object of one kind to list; mutex held. */
-static int walk_pins(PyObject *list)
-{
-    int rc = 0;
-    for (hal_pin_t *p = halpr_first_pin(); p && rc == 0; p = halpr_next_pin(p))
-        rc = append(list, pin_dict(p));
-    return rc;
-}
-static int walk_params(PyObject *list)
-{
-    int rc = 0;
-    for (hal_param_t *p = halpr_first_param(); p && rc == 0; p = halpr_next_param(p))
-        rc = append(list, param_dict(p));
-    return rc;
-}
-static int walk_signals(PyObject *list)
-{
-    int rc = 0;
-    for (hal_sig_t *s = halpr_first_sig(); s && rc == 0; s = halpr_next_sig(s))
-        rc = append(list, sig_dict(s));
-    return rc;
-}
-static int walk_comps(PyObject *list)
-{
-    int rc = 0;
-    for (hal_comp_t *c = halpr_first_comp(); c && rc == 0; c = halpr_next_comp(c))
-        rc = append(list, comp_dict(c));
-    return rc;
-}
-static int walk_functs(PyObject *list)
-{
-    int rc = 0;
-    for (hal_funct_t *f = halpr_first_funct(); f && rc == 0; f = halpr_next_funct(f))
-        rc = append(list, funct_dict(f));
-    return rc;
-}
-static int walk_threads(PyObject *list)
-{
-    int rc = 0;
-    for (hal_thread_t *t = halpr_first_thread(); t && rc == 0; t = halpr_next_thread(t))
-        rc = append(list, thread_dict(t));
-    return rc;
-}
+/* Defines NAME(list): appends the dict of every object of one kind to list; mutex held. */
+#define DEFINE_WALKER(NAME, TYPE, FIRST, NEXT, DICT)                  \
+    static int NAME(PyObject *list)                                   \
+    {                                                                 \
+        int rc = 0;                                                   \
+        for (TYPE *o = FIRST(); o && rc == 0; o = NEXT(o))            \
+            rc = append(list, DICT(o));                               \
+        return rc;                                                    \
+    }
+
+DEFINE_WALKER(walk_pins, hal_pin_t, halpr_first_pin, halpr_next_pin, pin_dict)
+DEFINE_WALKER(walk_params, hal_param_t, halpr_first_param, halpr_next_param, param_dict)
+DEFINE_WALKER(walk_signals, hal_sig_t, halpr_first_sig, halpr_next_sig, sig_dict)
+DEFINE_WALKER(walk_comps, hal_comp_t, halpr_first_comp, halpr_next_comp, comp_dict)
+DEFINE_WALKER(walk_functs, hal_funct_t, halpr_first_funct, halpr_next_funct, funct_dict)
+DEFINE_WALKER(walk_threads, hal_thread_t, halpr_first_thread, halpr_next_thread, thread_dict)
 
 /* Kind names and their walkers. */
 static const struct { const char *kind; int (*walk)(PyObject *); } walkers[] = {

@@ -186,17 +186,19 @@ static PyObject *port_figure(PyObject *obj, const char *op, unsigned (*fn)(hal_p
     return PyLong_FromUnsignedLong(fn(port));
 }
 
-/* item.size(), item.readable(), item.writable() */
+/* item.size(): a port's buffer size in bytes. */
 static PyObject *item_port_size(PyObject *obj, PyObject *unused)
 {
     (void)unused;
     return port_figure(obj, "size", hal_port_buffer_size);
 }
+/* item.readable(): bytes a port holds for reading. */
 static PyObject *item_port_readable(PyObject *obj, PyObject *unused)
 {
     (void)unused;
     return port_figure(obj, "readable", hal_port_readable);
 }
+/* item.writable(): bytes a port can take. */
 static PyObject *item_port_writable(PyObject *obj, PyObject *unused)
 {
     (void)unused;

@@ -123,38 +123,34 @@ static PyObject *lookup_s(const char *name)
     return hal_py_from_value(type, &data);
 }
 
-/* get_p(name) -> value or None */
-static PyObject *py_get_p(PyObject *self, PyObject *args)
+/* Parses one name with format fmt and returns lookup(name), or None when it is not found. */
+static PyObject *get_or_none(PyObject *args, const char *fmt, PyObject *(*lookup)(const char *))
 {
     const char *name;
     PyObject *value;
 
-    (void)self;
-    if (!PyArg_ParseTuple(args, "s:get_p", &name)) {
+    if (!PyArg_ParseTuple(args, fmt, &name)) {
         return NULL;
     }
-    value = lookup_p(name);
+    value = lookup(name);
     if (value == NULL && !PyErr_Occurred()) {
         Py_RETURN_NONE;
     }
     return value;
 }
 
+/* get_p(name) -> value or None */
+static PyObject *py_get_p(PyObject *self, PyObject *args)
+{
+    (void)self;
+    return get_or_none(args, "s:get_p", lookup_p);
+}
+
 /* get_s(name) -> value or None */
 static PyObject *py_get_s(PyObject *self, PyObject *args)
 {
-    const char *name;
-    PyObject *value;
-
     (void)self;
-    if (!PyArg_ParseTuple(args, "s:get_s", &name)) {
-        return NULL;
-    }
-    value = lookup_s(name);
-    if (value == NULL && !PyErr_Occurred()) {
-        Py_RETURN_NONE;
-    }
-    return value;
+    return get_or_none(args, "s:get_s", lookup_s);
 }
 
 /* get_value(name): pin, then param, then signal. */

@@ -186,13 +186,14 @@ static PyObject *get_maxdepth(PyObject *o, void *c) { (void)c; return int_prop(o
 static PyObject *get_underruns(PyObject *o, void *c) { (void)c; return int_prop(o, hal_stream_num_underruns); }
 static PyObject *get_overruns(PyObject *o, void *c) { (void)c; return int_prop(o, hal_stream_num_overruns); }
 
-/* readable / writable properties. */
+/* stream.readable: a record is waiting. */
 static PyObject *get_readable(PyObject *o, void *c)
 {
     (void)c;
     if (check_open((hal_py_stream_t *)o) < 0) return NULL;
     return PyBool_FromLong(hal_stream_readable(&((hal_py_stream_t *)o)->stream));
 }
+/* stream.writable: a record fits now. */
 static PyObject *get_writable(PyObject *o, void *c)
 {
     (void)c;

@@ -2,13 +2,13 @@
 #include "rtapi.h"
 #include "rtapi_app.h"
 #include "hal.h"
-#include "stream_fields.h"
+#include "stream_module.h"
 
 MODULE_AUTHOR("OpenEMC");
 MODULE_DESCRIPTION("Drives HAL pins from a stream written by halstreamer");
 MODULE_LICENSE("GPL");
 
-#define MAX_STREAMERS 8
+#define MAX_STREAMERS STREAM_MODULE_MAX_CHANS
 #define STREAMER_KEY_BASE 0x48535430
 
 static char *cfg[MAX_STREAMERS];
@@ -31,11 +31,22 @@ typedef struct {
     stream_fields_t fields;
 } streamer_chan_t;
 
-static int comp_id;
-static int num_chans;
-static hal_stream_t streams[MAX_STREAMERS];
-static int stream_ok[MAX_STREAMERS];
-static streamer_chan_t *chans[MAX_STREAMERS];
+static void stream_out(void *arg, long period);
+static int new_status_pins(void *chan, const char *prefix, int comp_id);
+
+/* The module's description and channel state, shared with stream_module.c. */
+static stream_module_t mod = {
+    .name = "streamer",
+    .tag = "STREAMER",
+    .key_base = STREAMER_KEY_BASE,
+    .field_dir = HAL_OUT,
+    .chan_size = sizeof(streamer_chan_t),
+    .fields_offset = offsetof(streamer_chan_t, fields),
+    .new_status_pins = new_status_pins,
+    .funct = stream_out,
+    .cfg = cfg,
+    .depth = depth,
+};
 
 /* Returns non-zero when this call should pop a record, per clock-mode. */
 static int clocked(streamer_chan_t *ch)
@@ -56,9 +67,9 @@ static int clocked(streamer_chan_t *ch)
 static void stream_out(void *arg, long period)
 {
     int n = (int)(long)arg;
-    streamer_chan_t *ch = chans[n];
+    streamer_chan_t *ch = mod.chans[n];
     union hal_stream_data rec[STREAM_FIELDS_MAX];
-    int fill = hal_stream_depth(&streams[n]);
+    int fill = hal_stream_depth(&mod.streams[n]);
     int pop;
     unsigned sampleno;
 
@@ -69,7 +80,7 @@ static void stream_out(void *arg, long period)
     if (!*ch->enable || !pop) {
         return;
     }
-    if (hal_stream_read(&streams[n], rec, &sampleno) < 0) {
+    if (hal_stream_read(&mod.streams[n], rec, &sampleno) < 0) {
         (*ch->underruns)++;
         return;
     }
@@ -77,8 +88,9 @@ static void stream_out(void *arg, long period)
 }
 
 /* Creates the status pins `streamer.N.*` of one channel. */
-static int new_status_pins(streamer_chan_t *ch, const char *prefix)
+static int new_status_pins(void *chan, const char *prefix, int comp_id)
 {
+    streamer_chan_t *ch = chan;
     int r = hal_pin_bit_newf(HAL_OUT, &ch->empty, comp_id, "%s.empty", prefix);
     if (r == 0) r = hal_pin_bit_newf(HAL_IN, &ch->enable, comp_id, "%s.enable", prefix);
     if (r == 0) r = hal_pin_s32_newf(HAL_OUT, &ch->curr_depth, comp_id, "%s.curr-depth", prefix);
@@ -93,98 +105,14 @@ static int new_status_pins(streamer_chan_t *ch, const char *prefix)
     return r;
 }
 
-/* Sets up channel n: stream, pins and function. */
-static int init_channel(int n)
-{
-    char prefix[HAL_NAME_LEN + 1];
-    char types[STREAM_FIELDS_MAX + 1];
-    int retval;
-
-    if (depth[n] <= 0) {
-        rtapi_print_msg(RTAPI_MSG_ERR,
-            "STREAMER: ERROR: channel %d: depth must be greater than 0\n", n);
-        return -EINVAL;
-    }
-    stream_fields_normalize(cfg[n], types);
-    retval = hal_stream_create(&streams[n], comp_id, STREAMER_KEY_BASE + n, depth[n], types);
-    if (retval < 0) {
-        rtapi_print_msg(RTAPI_MSG_ERR,
-            "STREAMER: ERROR: channel %d: could not create stream\n", n);
-        return retval;
-    }
-    stream_ok[n] = 1;
-    chans[n] = hal_malloc(sizeof(streamer_chan_t));
-    if (chans[n] == NULL) {
-        rtapi_print_msg(RTAPI_MSG_ERR, "STREAMER: ERROR: hal_malloc() failed\n");
-        return -ENOMEM;
-    }
-    rtapi_snprintf(prefix, sizeof(prefix), "streamer.%d", n);
-    retval = stream_fields_new_pins(&chans[n]->fields, cfg[n], prefix, HAL_OUT, comp_id);
-    if (retval == 0) retval = new_status_pins(chans[n], prefix);
-    if (retval == 0) retval = hal_export_funct(prefix, stream_out, (void *)(long)n, 1, 0, comp_id);
-    if (retval < 0) {
-        rtapi_print_msg(RTAPI_MSG_ERR,
-            "STREAMER: ERROR: channel %d: could not export pins/function\n", n);
-    }
-    return retval;
-}
-
-/* Destroys the streams created so far and removes the component. */
-static void cleanup(void)
-{
-    int n;
-    for (n = 0; n < MAX_STREAMERS; n++) {
-        if (stream_ok[n]) {
-            hal_stream_destroy(&streams[n]);
-            stream_ok[n] = 0;
-        }
-    }
-    hal_exit(comp_id);
-}
-
-/* Counts the channels given by cfg=, checking every cfg string. */
-static int count_channels(void)
-{
-    int n;
-    for (n = 0; n < MAX_STREAMERS && cfg[n] != NULL && cfg[n][0] != '\0'; n++) {
-        if (stream_fields_check_cfg(cfg[n]) < 0) {
-            return -EINVAL;
-        }
-    }
-    return n;
-}
-
 /* Module entry: parses cfg/depth and creates every channel. */
 int rtapi_app_main(void)
 {
-    int n, retval;
-
-    num_chans = count_channels();
-    if (num_chans < 0) {
-        return num_chans;
-    }
-    if (num_chans == 0) {
-        rtapi_print_msg(RTAPI_MSG_ERR, "STREAMER: ERROR: no channels specified\n");
-        return -EINVAL;
-    }
-    comp_id = hal_init("streamer");
-    if (comp_id < 0) {
-        rtapi_print_msg(RTAPI_MSG_ERR, "STREAMER: ERROR: hal_init() failed\n");
-        return comp_id;
-    }
-    for (n = 0; n < num_chans; n++) {
-        retval = init_channel(n);
-        if (retval < 0) {
-            cleanup();
-            return retval;
-        }
-    }
-    hal_ready(comp_id);
-    return 0;
+    return stream_module_init(&mod);
 }
 
 /* Module exit: destroys the streams and the component. */
 void rtapi_app_exit(void)
 {
-    cleanup();
+    stream_module_exit(&mod);
 }

@@ -7,24 +7,18 @@ MODULE_AUTHOR("OpenEMC");
 MODULE_DESCRIPTION("Creates up to three HAL threads");
 MODULE_LICENSE("GPL");
 
-static char *name1 = "thread1";
-RTAPI_MP_STRING(name1, "name of thread 1");
-static long period1 = 1000000;
-RTAPI_MP_LONG(period1, "period of thread 1 (ns)");
-static int fp1 = 1;
-RTAPI_MP_INT(fp1, "thread 1 uses floating point (ignored)");
-static char *name2 = NULL;
-RTAPI_MP_STRING(name2, "name of thread 2");
-static long period2 = 0;
-RTAPI_MP_LONG(period2, "period of thread 2 (ns)");
-static int fp2 = 1;
-RTAPI_MP_INT(fp2, "thread 2 uses floating point (ignored)");
-static char *name3 = NULL;
-RTAPI_MP_STRING(name3, "name of thread 3");
-static long period3 = 0;
-RTAPI_MP_LONG(period3, "period of thread 3 (ns)");
-static int fp3 = 1;
-RTAPI_MP_INT(fp3, "thread 3 uses floating point (ignored)");
+/* Declares the name, period (ns) and fp module parameters of thread slot n. */
+#define THREAD_PARAMS(n, name_dflt, period_dflt)                            \
+    static char *name##n = name_dflt;                                       \
+    RTAPI_MP_STRING(name##n, "name of thread " #n);                         \
+    static long period##n = period_dflt;                                    \
+    RTAPI_MP_LONG(period##n, "period of thread " #n " (ns)");               \
+    static int fp##n = 1;                                                   \
+    RTAPI_MP_INT(fp##n, "thread " #n " uses floating point (ignored)");
+
+THREAD_PARAMS(1, "thread1", 1000000)
+THREAD_PARAMS(2, NULL, 0)
+THREAD_PARAMS(3, NULL, 0)
 
 #define NUM_THREADS 3
 

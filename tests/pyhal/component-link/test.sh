@@ -1,8 +1,4 @@
 #!/bin/bash
 # component-link: Python hal component <-> halcmd, values both ways.
-REALTIME=${REALTIME:-realtime}
-$REALTIME start
-python3 pycomp.py
-status=$?
-$REALTIME stop
-exit $status
+. ../lib.sh
+pyhal_run pycomp.py

@@ -3,15 +3,7 @@ import subprocess
 import time
 
 import hal
-
-
-def show(label, func):
-    """Print label and the result or the exception raised by func."""
-    try:
-        result = func()
-    except Exception as exc:  # the test records every error text
-        result = "%s: %s" % (type(exc).__name__, exc)
-    print("%s -> %s" % (label, result))
+from pyhal_test import show
 
 
 c = hal.component("pystream")

@@ -1,10 +1,4 @@
 #!/bin/bash
 # stream: Python access to HAL streams, alone and through streamer/sampler.
-REALTIME=${REALTIME:-realtime}
-$REALTIME start
-halcmd -f setup.hal
-python3 streams.py
-status=$?
-halcmd stop
-$REALTIME stop
-exit $status
+. ../lib.sh
+pyhal_run streams.py setup.hal
