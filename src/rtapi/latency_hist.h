@@ -2,6 +2,8 @@
 #ifndef LATENCY_HIST_H
 #define LATENCY_HIST_H
 
+#include <stdio.h>
+
 #define LATENCY_BUCKET_NS 10
 #define LATENCY_BUCKETS 100000
 
@@ -19,5 +21,10 @@ void latency_hist_reset(latency_hist_t *h);
 void latency_hist_add(latency_hist_t *h, long long ns);
 /* Smallest value v with at least fraction of the samples <= v (bucket resolution). */
 long long latency_hist_percentile(const latency_hist_t *h, double fraction);
+/* Count of samples in [from_ns, to_ns) at bucket resolution (to_ns < 0: no upper end). */
+unsigned long long latency_hist_count(const latency_hist_t *h, long long from_ns, long long to_ns);
+/* Print a text histogram with bins of bin_ns (a multiple of LATENCY_BUCKET_NS) and at most
+   max_rows rows; the last row gathers everything above. Returns 0 or -EINVAL. */
+int latency_hist_print(const latency_hist_t *h, long long bin_ns, int max_rows, FILE *out);
 
 #endif

@@ -83,6 +83,16 @@ static void print_json_row(const latency_thread_t *t, int last)
            latency_hist_percentile(h, 0.9999), h->max_ns, t->overruns, last ? "" : ",");
 }
 
+/* Print a text histogram per thread (latency-histogram). */
+static void report_histograms(latency_thread_t *threads, int n, long long bin_ns)
+{
+    for (int i = 0; i < n; i++) {
+        printf("\n%s thread (period %lld ns), wake-up jitter in %lld ns bins:\n",
+               threads[i].name, threads[i].period_ns, bin_ns);
+        latency_hist_print(&threads[i].hist, bin_ns, 40, stdout);
+    }
+}
+
 /* Print the report for n threads. */
 static void report(latency_thread_t *threads, int n, double seconds, int json)
 {
@@ -106,9 +116,12 @@ static void report(latency_thread_t *threads, int n, double seconds, int json)
 /* Print usage; returns the exit status to use. */
 static int usage(FILE *out, int status)
 {
-    fprintf(out, "Usage: latency-test [-t SECONDS] [--json] [base_period [servo_period]]\n"
+    fprintf(out, "Usage: latency-test [-t SECONDS] [--json | --histogram[=BIN_NS]]"
+            " [base_period [servo_period]]\n"
             "  one period: a single servo thread; none: base 25us, servo 1ms\n"
-            "  periods: NUMBER[s|ms|us|ns]; a bare number < 1000 is us, else ns\n");
+            "  periods: NUMBER[s|ms|us|ns]; a bare number < 1000 is us, else ns\n"
+            "  --histogram: also print a text histogram per thread (bins of BIN_NS,\n"
+            "  a multiple of 10, default 1000)\n");
     return status;
 }
 
@@ -119,6 +132,18 @@ static double parse_seconds(const char *text)
     double s = strtod(text, &end);
 
     return (end == text || *end || !(s > 0) || !isfinite(s)) ? -1 : s;
+}
+
+/* Parse the --histogram bin width: default 1000 ns; -1 when malformed. */
+static long long parse_bin(const char *text)
+{
+    char *end;
+    long long bin;
+
+    if (!text)
+        return 1000;
+    bin = strtoll(text, &end, 10);
+    return (end == text || *end || bin <= 0 || bin % LATENCY_BUCKET_NS) ? -1 : bin;
 }
 
 /* Give each thread up to 5 s more to record its first sample (loaded hosts). */
@@ -168,8 +193,10 @@ int main(int argc, char **argv)
     static latency_thread_t threads[2] = { { "base", 25000, -1, { 0 }, 0 },
                                            { "servo", 1000000, -1, { 0 }, 0 } };
     static const struct option options[] = {
-        { "json", no_argument, NULL, 'j' }, { "help", no_argument, NULL, 'h' }, { 0 } };
+        { "json", no_argument, NULL, 'j' }, { "help", no_argument, NULL, 'h' },
+        { "histogram", optional_argument, NULL, 'H' }, { 0 } };
     double seconds = 10;
+    long long bin_ns = 0;
     int json = 0, opt, first = 0, n = 2;
 
     while ((opt = getopt_long(argc, argv, "t:h", options, NULL)) != -1) {
@@ -179,6 +206,11 @@ int main(int argc, char **argv)
         }
         if (opt == 'j')
             json = 1;
+        if (opt == 'H' && (bin_ns = parse_bin(optarg)) < 0) {
+            fprintf(stderr, "latency-test: --histogram=%s: not a positive multiple of %d ns\n",
+                    optarg, LATENCY_BUCKET_NS);
+            return 1;
+        }
         if (opt == 'h' || opt == '?')
             return usage(opt == 'h' ? stdout : stderr, opt == 'h' ? 0 : 1);
     }
@@ -196,5 +228,7 @@ int main(int argc, char **argv)
     if (run(threads + first, n, seconds) != 0)
         return 1;
     report(threads + first, n, seconds, json);
+    if (bin_ns > 0 && !json)
+        report_histograms(threads + first, n, bin_ns);
     return 0;
 }

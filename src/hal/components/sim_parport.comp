@@ -1,0 +1,92 @@
+component sim_parport "Stand-in for hal_parport with the same pin names, for simulated machines";
+pin in bit pin_01_out "Output pin 01 as written to the port";
+pin out bit pin_01_out_fake "Pin 01 as the port would drive it: pin-01-out, inverted when pin-01-out-invert is TRUE";
+pin in bit pin_02_out "Output pin 02 as written to the port";
+pin out bit pin_02_out_fake "Pin 02 as the port would drive it: pin-02-out, inverted when pin-02-out-invert is TRUE";
+pin in bit pin_03_out "Output pin 03 as written to the port";
+pin out bit pin_03_out_fake "Pin 03 as the port would drive it: pin-03-out, inverted when pin-03-out-invert is TRUE";
+pin in bit pin_04_out "Output pin 04 as written to the port";
+pin out bit pin_04_out_fake "Pin 04 as the port would drive it: pin-04-out, inverted when pin-04-out-invert is TRUE";
+pin in bit pin_05_out "Output pin 05 as written to the port";
+pin out bit pin_05_out_fake "Pin 05 as the port would drive it: pin-05-out, inverted when pin-05-out-invert is TRUE";
+pin in bit pin_06_out "Output pin 06 as written to the port";
+pin out bit pin_06_out_fake "Pin 06 as the port would drive it: pin-06-out, inverted when pin-06-out-invert is TRUE";
+pin in bit pin_07_out "Output pin 07 as written to the port";
+pin out bit pin_07_out_fake "Pin 07 as the port would drive it: pin-07-out, inverted when pin-07-out-invert is TRUE";
+pin in bit pin_08_out "Output pin 08 as written to the port";
+pin out bit pin_08_out_fake "Pin 08 as the port would drive it: pin-08-out, inverted when pin-08-out-invert is TRUE";
+pin in bit pin_09_out "Output pin 09 as written to the port";
+pin out bit pin_09_out_fake "Pin 09 as the port would drive it: pin-09-out, inverted when pin-09-out-invert is TRUE";
+pin in bit pin_14_out "Output pin 14 as written to the port";
+pin out bit pin_14_out_fake "Pin 14 as the port would drive it: pin-14-out, inverted when pin-14-out-invert is TRUE";
+pin in bit pin_16_out "Output pin 16 as written to the port";
+pin out bit pin_16_out_fake "Pin 16 as the port would drive it: pin-16-out, inverted when pin-16-out-invert is TRUE";
+pin in bit pin_17_out "Output pin 17 as written to the port";
+pin out bit pin_17_out_fake "Pin 17 as the port would drive it: pin-17-out, inverted when pin-17-out-invert is TRUE";
+pin in bit pin_10_in_fake "Simulated level of input pin 10";
+pin out bit pin_10_in "Input pin 10: pin-10-in-fake";
+pin out bit pin_10_in_not "Input pin 10 inverted";
+pin in bit pin_11_in_fake "Simulated level of input pin 11";
+pin out bit pin_11_in "Input pin 11: pin-11-in-fake";
+pin out bit pin_11_in_not "Input pin 11 inverted";
+pin in bit pin_12_in_fake "Simulated level of input pin 12";
+pin out bit pin_12_in "Input pin 12: pin-12-in-fake";
+pin out bit pin_12_in_not "Input pin 12 inverted";
+pin in bit pin_13_in_fake "Simulated level of input pin 13";
+pin out bit pin_13_in "Input pin 13: pin-13-in-fake";
+pin out bit pin_13_in_not "Input pin 13 inverted";
+pin in bit pin_15_in_fake "Simulated level of input pin 15";
+pin out bit pin_15_in "Input pin 15: pin-15-in-fake";
+pin out bit pin_15_in_not "Input pin 15 inverted";
+param rw bit pin_01_out_invert "Invert output pin 01";
+param rw bit pin_02_out_invert "Invert output pin 02";
+param rw bit pin_03_out_invert "Invert output pin 03";
+param rw bit pin_04_out_invert "Invert output pin 04";
+param rw bit pin_05_out_invert "Invert output pin 05";
+param rw bit pin_06_out_invert "Invert output pin 06";
+param rw bit pin_07_out_invert "Invert output pin 07";
+param rw bit pin_08_out_invert "Invert output pin 08";
+param rw bit pin_09_out_invert "Invert output pin 09";
+param rw bit pin_14_out_invert "Invert output pin 14";
+param rw bit pin_16_out_invert "Invert output pin 16";
+param rw bit pin_17_out_invert "Invert output pin 17";
+function read "Copy each pin-NN-in-fake to pin-NN-in and its inverse to pin-NN-in-not";
+function write "Copy each pin-NN-out, inverted if asked, to pin-NN-out-fake";
+description """Load it with the name of the port it replaces (for example
+names=parport.0) so HAL files written for hal_parport in its default mode (pins 1-9,
+14, 16, 17 outputs; 10-13, 15 inputs) work unchanged. The -fake pins connect the
+simulated port to the rest of the simulation. Reset, reset-time and the other port
+modes of hal_parport are not simulated.""";
+license "GPL";
+author "OpenEMC";
+;;
+
+/* Pass the simulated input levels to the port input pins. */
+FUNCTION(read) {
+    pin_10_in = pin_10_in_fake;
+    pin_10_in_not = !pin_10_in_fake;
+    pin_11_in = pin_11_in_fake;
+    pin_11_in_not = !pin_11_in_fake;
+    pin_12_in = pin_12_in_fake;
+    pin_12_in_not = !pin_12_in_fake;
+    pin_13_in = pin_13_in_fake;
+    pin_13_in_not = !pin_13_in_fake;
+    pin_15_in = pin_15_in_fake;
+    pin_15_in_not = !pin_15_in_fake;
+}
+
+/* Drive the simulated output levels from the port output pins. */
+FUNCTION(write) {
+    pin_01_out_fake = pin_01_out ^ pin_01_out_invert;
+    pin_02_out_fake = pin_02_out ^ pin_02_out_invert;
+    pin_03_out_fake = pin_03_out ^ pin_03_out_invert;
+    pin_04_out_fake = pin_04_out ^ pin_04_out_invert;
+    pin_05_out_fake = pin_05_out ^ pin_05_out_invert;
+    pin_06_out_fake = pin_06_out ^ pin_06_out_invert;
+    pin_07_out_fake = pin_07_out ^ pin_07_out_invert;
+    pin_08_out_fake = pin_08_out ^ pin_08_out_invert;
+    pin_09_out_fake = pin_09_out ^ pin_09_out_invert;
+    pin_14_out_fake = pin_14_out ^ pin_14_out_invert;
+    pin_16_out_fake = pin_16_out ^ pin_16_out_invert;
+    pin_17_out_fake = pin_17_out ^ pin_17_out_invert;
+}
