@@ -50,13 +50,29 @@ param rw bit pin_09_out_invert "Invert output pin 09";
 param rw bit pin_14_out_invert "Invert output pin 14";
 param rw bit pin_16_out_invert "Invert output pin 16";
 param rw bit pin_17_out_invert "Invert output pin 17";
+param rw bit pin_01_out_reset "When TRUE, the reset function puts output pin 01 back to its inactive level";
+param rw bit pin_02_out_reset "When TRUE, the reset function puts output pin 02 back to its inactive level";
+param rw bit pin_03_out_reset "When TRUE, the reset function puts output pin 03 back to its inactive level";
+param rw bit pin_04_out_reset "When TRUE, the reset function puts output pin 04 back to its inactive level";
+param rw bit pin_05_out_reset "When TRUE, the reset function puts output pin 05 back to its inactive level";
+param rw bit pin_06_out_reset "When TRUE, the reset function puts output pin 06 back to its inactive level";
+param rw bit pin_07_out_reset "When TRUE, the reset function puts output pin 07 back to its inactive level";
+param rw bit pin_08_out_reset "When TRUE, the reset function puts output pin 08 back to its inactive level";
+param rw bit pin_09_out_reset "When TRUE, the reset function puts output pin 09 back to its inactive level";
+param rw bit pin_14_out_reset "When TRUE, the reset function puts output pin 14 back to its inactive level";
+param rw bit pin_16_out_reset "When TRUE, the reset function puts output pin 16 back to its inactive level";
+param rw bit pin_17_out_reset "When TRUE, the reset function puts output pin 17 back to its inactive level";
+param rw u32 reset_time = 5000 "Accepted for hal_parport compatibility (ns between write and reset); reset acts at once in the simulation";
 function read "Copy each pin-NN-in-fake to pin-NN-in and its inverse to pin-NN-in-not";
 function write "Copy each pin-NN-out, inverted if asked, to pin-NN-out-fake";
+function reset "Put each pin-NN-out-fake whose pin-NN-out-reset is TRUE back to its inactive level (pin-NN-out-invert)";
 description """Load it with the name of the port it replaces (for example
 names=parport.0) so HAL files written for hal_parport in its default mode (pins 1-9,
 14, 16, 17 outputs; 10-13, 15 inputs) work unchanged. The -fake pins connect the
-simulated port to the rest of the simulation. Reset, reset-time and the other port
-modes of hal_parport are not simulated.""";
+simulated port to the rest of the simulation. The reset function, the
+pin-NN-out-reset params and reset-time exist so that HAL files written for step
+generation with hal_parport load unchanged; reset acts as soon as it runs, without
+waiting for reset-time. The other port modes of hal_parport are not simulated.""";
 license "GPL";
 author "OpenEMC";
 ;;
@@ -89,4 +105,20 @@ FUNCTION(write) {
     pin_14_out_fake = pin_14_out ^ pin_14_out_invert;
     pin_16_out_fake = pin_16_out ^ pin_16_out_invert;
     pin_17_out_fake = pin_17_out ^ pin_17_out_invert;
+}
+
+/* Return the outputs marked for reset to their inactive (inverted-zero) level. */
+FUNCTION(reset) {
+    if (pin_01_out_reset) pin_01_out_fake = pin_01_out_invert;
+    if (pin_02_out_reset) pin_02_out_fake = pin_02_out_invert;
+    if (pin_03_out_reset) pin_03_out_fake = pin_03_out_invert;
+    if (pin_04_out_reset) pin_04_out_fake = pin_04_out_invert;
+    if (pin_05_out_reset) pin_05_out_fake = pin_05_out_invert;
+    if (pin_06_out_reset) pin_06_out_fake = pin_06_out_invert;
+    if (pin_07_out_reset) pin_07_out_fake = pin_07_out_invert;
+    if (pin_08_out_reset) pin_08_out_fake = pin_08_out_invert;
+    if (pin_09_out_reset) pin_09_out_fake = pin_09_out_invert;
+    if (pin_14_out_reset) pin_14_out_fake = pin_14_out_invert;
+    if (pin_16_out_reset) pin_16_out_fake = pin_16_out_invert;
+    if (pin_17_out_reset) pin_17_out_fake = pin_17_out_invert;
 }

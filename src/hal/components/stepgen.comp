@@ -29,8 +29,8 @@ variable long long target_addval;
 variable long long deltalim;
 variable long pulse_ns;
 variable long dir_ok_ns;
-variable long reverse_ok_ns;
-variable int hold_dds;
+variable long setup_ns;
+variable int curr_dir = 1;
 variable double freq;
 variable double old_pos_cmd;
 variable int state;
@@ -40,21 +40,51 @@ include <rtapi_math.h>;
 license "GPL";
 author "OpenEMC";
 description """Load with step_type=T0,T1,... (one entry per channel, at most 16) and
-ctrl_type=p|v,... (default p). Step types: 0 step/dir, 1 up/down, 2 quadrature,
-3 three-wire, 4 three-wire half step, 5 and 6 unipolar full step, 7 and 8 bipolar
-full step, 9 unipolar half step, 10 bipolar half step, 11 five-wire unipolar,
-12 five-wire wave, 13 five-wire unipolar half step, 14 five-wire wave half step,
-15 user defined by user_step_type=P0,P1,... (2 to 10 bit patterns, bit 0 = phase A).
+ctrl_type=C0,C1,... where only the first letter of each entry counts: p or P
+(position mode, also when the entry is missing or empty) or v or V (velocity mode).
+Step types: 0 step/dir, 1 up/down, 2 quadrature, 3 three-wire, 4 three-wire half
+step, 5 and 6 unipolar full step, 7 and 8 bipolar full step, 9 unipolar half step,
+10 bipolar half step, 11 five-wire unipolar, 12 five-wire wave, 13 five-wire
+unipolar half step, 14 five-wire wave half step, 15 user defined by
+user_step_type=P0,P1,... (2 to 10 patterns, bit 0 = phase A, bit 4 = phase E).
+
+Phase patterns of types 2..14, one per state, written as bits E..A (A rightmost);
+a step forward moves to the next state, a step backward to the previous one, and
+the cycle wraps. Every channel starts in state 0 (the first pattern), and
+make-pulses writes the pattern of the current state on every call:
+  2: 01 11 10 00
+  3: 001 010 100
+  4: 001 011 010 110 100 101
+  5: 0001 0010 0100 1000
+  6: 0011 0110 1100 1001
+  7: 0001 0111 1110 1000
+  8: 0101 0110 1010 1001
+  9: 0001 0011 0010 0110 0100 1100 1000 1001
+  10: 0001 0101 0111 0110 1110 1010 1000 1001
+  11: 00001 00010 00100 01000 10000
+  12: 00011 00110 01100 11000 10001
+  13: 00001 00011 00010 00110 00100 01100 01000 11000 10000 10001
+  14: 00011 00111 00110 01110 01100 11100 11000 11001 10001 10011
 
 The position is a 64-bit fixed-point accumulator whose bit 28 is the step bit; it
-starts at half a step, so steps happen half way between whole positions.
+starts at half a step, so steps happen half way between whole positions. counts
+(and rawcounts) are the accumulator shifted right by 28 bits; position-fb is the
+accumulator less the half step, divided by 2^28 and by position-scale.
 make-pulses moves the per-period increment toward its target by at most one
 acceleration step, adds it to the accumulator and emits a step whenever the step
 bit changes. update-freq turns the command into that target under maxvel and
-maxaccel. After a step, a step the other way waits for steplen + dirhold +
-dirsetup (type 0) or steplen + dirdelay (other types); the dir output changes
-only once steplen + dirhold have passed. stepspace only lowers the highest
-step rate.""";
+maxaccel (velocity mode: velocity-cmd clamped to maxvel and ramped at maxaccel;
+position mode: a move to position-cmd under both limits).
+
+Direction changes: while the timer started by the last step (steplen + dirhold for
+type 0, steplen + dirdelay for the others) runs, a change of direction holds the
+accumulator. Once it has run out the direction flips; type 0 then sets dir (TRUE =
+negative) and holds the accumulator for dirsetup more before the first step the
+new way. So a step the other way comes at least steplen + dirhold + dirsetup
+(type 0) or steplen + dirdelay (other types) after the last step, and dir changes
+at least dirhold after the end of the last pulse and dirsetup before the next.
+stepspace only lowers the highest step rate. steplen, stepspace (types 0 and 1)
+and dirdelay are at least one make-pulses period; dirsetup and dirhold may be 0.""";
 ;;
 #define STEPGEN_MAX_CHAN 16
 #define STEPGEN_MAX_CYCLE 10
@@ -159,7 +189,7 @@ static double stepgen_timing_limit(struct __comp_state *__comp_inst)
 {
     int type = personality & 0xff;
     long min_period = stepgen_round(&steplen, 1);
-    if (type <= 1) min_period += stepgen_round(&stepspace, 0);
+    if (type <= 1) min_period += stepgen_round(&stepspace, 1);
     if (type == 0) {
         stepgen_round(&dirsetup, 0);
         stepgen_round(&dirhold, 0);
@@ -272,50 +302,57 @@ static void stepgen_freq_one(struct __comp_state *__comp_inst, int chan)
     deltalim = (long long)(amax * per_hz_s);
 }
 
-/* Count a timer down by one make-pulses period; returns TRUE when it just ran out. */
-static int stepgen_count_down(long *timer_ns)
+/* Count a timer down by one make-pulses period, stopping at 0. */
+static void stepgen_count_down(long *timer_ns)
 {
-    if (*timer_ns <= 0) return 0;
-    *timer_ns = *timer_ns > base_ns ? *timer_ns - base_ns : 0;
-    return *timer_ns == 0;
+    if (*timer_ns > 0) *timer_ns = *timer_ns > base_ns ? *timer_ns - base_ns : 0;
 }
 
-/* Move addval toward its target by at most deltalim; a change of sign while a step
-   the other way is not yet allowed freezes the accumulator until it is. */
+/* Move addval toward its target by at most deltalim per period. */
 static void stepgen_ramp(struct __comp_state *__comp_inst)
 {
-    long long old = addval;
     if (deltalim == 0) addval = target_addval;
     else if (target_addval > addval + deltalim) addval += deltalim;
     else if (target_addval < addval - deltalim) addval -= deltalim;
     else addval = target_addval;
-    if ((addval >= 0) != (old >= 0) && reverse_ok_ns != 0) hold_dds = 1;
 }
 
-/* Emit one step in the direction of addval and restart the timing constraints. */
+/* Follow a change of the sign of addval: the direction flips only once the hold
+   time after the last step has passed (type 0 then sets dir and waits dirsetup).
+   Returns TRUE when the accumulator may advance in this period. */
+static int stepgen_direction(struct __comp_state *__comp_inst)
+{
+    int want = addval > 0 ? 1 : addval < 0 ? -1 : curr_dir;
+    if (want != curr_dir) {
+        if (dir_ok_ns > 0) return 0;
+        curr_dir = want;
+        if ((personality & 0xff) == 0) {
+            dir = want < 0;
+            setup_ns = dirsetup;
+        }
+    }
+    return setup_ns == 0;
+}
+
+/* Emit one step in the current direction and restart the timing constraints. */
 static void stepgen_step(struct __comp_state *__comp_inst)
 {
     int type = personality & 0xff;
     pulse_ns = steplen;
     dir_ok_ns = pulse_ns + stepgen_hold_ns(__comp_inst);
-    reverse_ok_ns = dir_ok_ns + (type == 0 ? (long)dirsetup : 0);
     if (type == 0) step = 1;
-    else if (type == 1 && addval > 0) up = 1;
+    else if (type == 1 && curr_dir > 0) up = 1;
     else if (type == 1) down = 1;
-    else if (addval > 0) state = state + 1 < stepgen_cycle_length(type) ? state + 1 : 0;
+    else if (curr_dir > 0) state = state + 1 < stepgen_cycle_length(type) ? state + 1 : 0;
     else state = state > 0 ? state - 1 : stepgen_cycle_length(type) - 1;
 }
 
-/* Drive the level outputs: dir (type 0) once it may change, the phases (types 2..15). */
-static void stepgen_outputs(struct __comp_state *__comp_inst)
+/* Drive the phase outputs of types 2..15 from the current state. */
+static void stepgen_phase_outputs(struct __comp_state *__comp_inst)
 {
-    unsigned bits;
     int type = personality & 0xff;
-    if (type == 0) {
-        if (dir_ok_ns == 0) dir = addval < 0;
-        return;
-    }
-    if (type == 1) return;
+    unsigned bits;
+    if (type <= 1) return;
     bits = stepgen_pattern(type, state);
     phase_A = bits & 1;
     phase_B = (bits >> 1) & 1;
@@ -330,9 +367,9 @@ static void stepgen_pulses_one(struct __comp_state *__comp_inst)
     int step_now = 0;
     stepgen_count_down(&pulse_ns);
     stepgen_count_down(&dir_ok_ns);
-    if (stepgen_count_down(&reverse_ok_ns)) hold_dds = 0;
-    if (enable && !hold_dds) stepgen_ramp(__comp_inst);
-    if (enable && !hold_dds) {
+    stepgen_count_down(&setup_ns);
+    if (enable) stepgen_ramp(__comp_inst);
+    if (enable && stepgen_direction(__comp_inst)) {
         long long before = accum;
         accum += addval;
         step_now = ((before ^ accum) >> STEPGEN_PICKOFF) & 1;
@@ -341,7 +378,7 @@ static void stepgen_pulses_one(struct __comp_state *__comp_inst)
     if (pulse_ns == 0 && step_ptr) step = 0;
     if (pulse_ns == 0 && up_ptr) up = down = 0;
     if (step_now) stepgen_step(__comp_inst);
-    stepgen_outputs(__comp_inst);
+    stepgen_phase_outputs(__comp_inst);
 }
 
 /* Publish counts and position of one channel. */
@@ -411,13 +448,11 @@ static int stepgen_personality(int i)
     }
     if (t == 15 && !user_cycle_len && stepgen_user_cycle() < 0) return -1;
     if (t >= 2) phases = t == 15 ? user_phases : stepgen_phases[t - 2];
-    if (ctrl_type[i] && ctrl_type[i][0]) {
-        if ((ctrl_type[i][0] == 'v' || ctrl_type[i][0] == 'V') && !ctrl_type[i][1]) v = 0x100;
-        else if ((ctrl_type[i][0] != 'p' && ctrl_type[i][0] != 'P') || ctrl_type[i][1]) {
-            rtapi_print_msg(RTAPI_MSG_ERR, "STEPGEN: ERROR: bad control type '%s' for axis %d "
-                            "(must be 'p' or 'v')\n", ctrl_type[i], i);
-            return -1;
-        }
+    if (ctrl_type[i] && (ctrl_type[i][0] == 'v' || ctrl_type[i][0] == 'V')) v = 0x100;
+    else if (ctrl_type[i] && ctrl_type[i][0] && ctrl_type[i][0] != 'p' && ctrl_type[i][0] != 'P') {
+        rtapi_print_msg(RTAPI_MSG_ERR, "STEPGEN: ERROR: bad control type '%s' for axis %d "
+                        "(must be 'p' or 'v')\n", ctrl_type[i], i);
+        return -1;
     }
     return t | v | phases << 12;
 }

@@ -62,6 +62,9 @@ def synopsis(comp):
         return '\\fBloadusr %s\\fR' % comp.name
     if comp.singleton:
         return '\\fBloadrt %s\\fR' % comp.name
+    if comp.option('rtapi_app') is False:
+        args = ''.join(' [%s=\\fI...\\fR]' % mp.name for mp in comp.modparams)
+        return '\\fBloadrt %s\\fR%s' % (comp.name, args)
     pers = ' [personality=\\fIP,P,...\\fR]' if comp.uses_personality else ''
     return ('\\fBloadrt %s\\fR [count=\\fIN\\fR|names=\\fIname1\\fR[,\\fIname2...\\fR]]%s'
             % (comp.name, pers))

@@ -1,10 +1,12 @@
 #!/bin/bash
 # stepgen: load errors, pins of each step type, moves, pulse timing, the 28-bit
-# accumulator, direction holds, enable, and the phase sequence of every step type
-# (2..15) forward and backward.
+# accumulator, direction holds (also a reversal long after the last step: dir
+# must lead the first step by dirsetup), enable, ctrl_type words, and the phase
+# sequence of every step type (2..15) forward and backward.
 for s in script-noconf script-badctrl script-badtype script-userbad script-userbad2 \
          script-types script-types2 script-move script-timing script-round \
-         script-dds script-reverse script-updown script-enable; do
+         script-dds script-reverse script-reverse-late script-updown script-enable \
+         script-ctrlword; do
     echo "== $s"
     "$EMC2_HOME/objects/unit/comptest" < $s
 done

@@ -3,6 +3,7 @@
 set -e
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
+here=$PWD
 cp kinds.comp "$tmp/"
 cd "$tmp"
 halcompile --document kinds.comp
@@ -20,3 +21,6 @@ page=$EMC2_HOME/share/man/man9/hc_doc_probe.9
 trap 'rm -rf "$tmp" "$page"' EXIT
 halcompile --install-doc hc_doc_probe.comp
 head -2 "$page" | tail -1
+cp "$here/noapp.comp" .
+halcompile --document noapp.comp
+grep -A1 '^\.SH SYNOPSIS' noapp.9 | tail -1

@@ -1,13 +1,16 @@
-component supply "Set output pins from input values";
+component supply "Set output pins from parameter values";
 modparam dummy num_chan "Number of supplies, 1 to 8 (default 1).";
 option singleton yes;
 license "GPL";
 author "OpenEMC";
-description """Each channel N copies its inputs to its outputs, the underscore pins inverted.
+description """Each channel N copies its two parameters to its outputs, the underscore pins
+inverted. The parameters are set with setp (they cannot be linked to signals).
+
+Parameters of channel N:
+  supply.N.d        bit rw     data value (default FALSE)
+  supply.N.value    float rw   analog value (default 0.0)
 
 Pins of channel N:
-  supply.N.d        bit in     data input
-  supply.N.value    float in   value input
   supply.N.q        bit out    = d
   supply.N._q       bit out    = not d
   supply.N.variable float out  = value
