@@ -15,6 +15,7 @@ static int n_cycle;
 static char **param_strings;
 static size_t n_param_strings;
 extern long long fake_clock_ns;
+int comptest_kins_dispatch(void *module, int argc, char **argv);
 
 /* Copy a string parameter value, remembering it so main can free it at exit. */
 static char *keep_string(const char *value)
@@ -233,7 +234,8 @@ static void dispatch(int argc, char **argv)
         void (*app_exit)(void) = (void (*)(void))dlsym(module, "rtapi_app_exit");
         if (app_exit) app_exit();
         printf("rtapi_app_exit:%s\n", fake_exited() ? " exited" : "");
-    } else printf("unknown command '%s'\n", c);
+    } else if (!comptest_kins_dispatch(module, argc, argv))
+        printf("unknown command '%s'\n", c);
 }
 
 /* Read script lines from stdin and run them. */

@@ -1,0 +1,153 @@
+/* switchkins.c: module entry, kinstype.is-N pins, identity and userk kinematics for switchable kins. */
+#include <string.h>
+#include "rtapi.h"
+#include "rtapi_app.h"
+#include "hal.h"
+#include "switchkins.h"
+
+MODULE_LICENSE("GPL");
+MODULE_AUTHOR("OpenEMC");
+
+static char *coordinates = NULL;
+RTAPI_MP_STRING(coordinates, "Axis letter of each joint for the identity kinematics (type 1)");
+static char *sparm = NULL;
+RTAPI_MP_STRING(sparm, "Module-specific setting, e.g. identityfirst");
+
+/* Pins shared by every switchable module. */
+typedef struct {
+    hal_bit_t *is_type[3];  /* kinstype.is-0/1/2 */
+    hal_s32_t *userk_fct;   /* userk.fct: forward calls of the user template */
+    hal_s32_t *userk_ict;   /* userk.ict: inverse calls of the user template */
+} switchkins_pins_t;
+
+static switchkins_pins_t *pins;
+static kins_coords_t coords;
+static int active_type;      /* 0, 1 or 2 as seen by motion */
+static int identity_first;   /* sparm=identityfirst: 0 means identity, 1 native */
+static int comp_id;
+
+/* The identity map in use (parsed coordinates=). */
+const kins_coords_t *switchkins_coords(void)
+{
+    return &coords;
+}
+
+/* True when the active selection runs the module's native kinematics. */
+static int native_active(void)
+{
+    return identity_first ? active_type == 1 : active_type == 0;
+}
+
+/* Joints -> world through the active kinematics. */
+int kinematicsForward(const double *joint, EmcPose *world,
+                      const KINEMATICS_FORWARD_FLAGS *fflags, KINEMATICS_INVERSE_FLAGS *iflags)
+{
+    (void)fflags;
+    (void)iflags;
+    if (native_active())
+        return switchkins_def.native_forward(joint, world);
+    if (active_type == 2)
+        *pins->userk_fct += 1;
+    kins_identity_forward(&coords, joint, world);
+    return 0;
+}
+
+/* World -> joints through the active kinematics. */
+int kinematicsInverse(const EmcPose *world, double *joint,
+                      const KINEMATICS_INVERSE_FLAGS *iflags, KINEMATICS_FORWARD_FLAGS *fflags)
+{
+    (void)iflags;
+    (void)fflags;
+    if (native_active())
+        return switchkins_def.native_inverse(world, joint);
+    if (active_type == 2)
+        *pins->userk_ict += 1;
+    kins_identity_inverse(&coords, world, joint);
+    return 0;
+}
+
+/* Native type while it is active; identity and user kinematics do both directions. */
+KINEMATICS_TYPE kinematicsType(void)
+{
+    return native_active() ? switchkins_def.native_type : KINEMATICS_BOTH;
+}
+
+/* These modules can switch. */
+int kinematicsSwitchable(void)
+{
+    return 1;
+}
+
+/* Select kinematics 0, 1 or 2 and show it on kinstype.is-N; other values are refused. */
+int kinematicsSwitch(int new_type)
+{
+    if (new_type < 0 || new_type > 2) {
+        rtapi_print_msg(RTAPI_MSG_ERR, "kinematicsSwitch:BAD VALUE <%d>\n", new_type);
+        return -1;
+    }
+    active_type = new_type;
+    for (int i = 0; i < 3; i++)
+        *pins->is_type[i] = (i == new_type);
+    return 0;
+}
+
+/* The ops table; its name is filled in from switchkins_def at load. */
+kins_ops_t kins_ops = { KINS_OPS_VERSION, sizeof(kins_ops_t), "switchkins",
+    kinematicsType, kinematicsForward, kinematicsInverse, kinematicsSwitchable, kinematicsSwitch };
+EXPORT_SYMBOL(kins_ops);
+EXPORT_SYMBOL(kinematicsType);
+EXPORT_SYMBOL(kinematicsForward);
+EXPORT_SYMBOL(kinematicsInverse);
+EXPORT_SYMBOL(kinematicsSwitchable);
+EXPORT_SYMBOL(kinematicsSwitch);
+
+/* Create kinstype.is-0/1/2 and userk.fct/ict. */
+static int export_common_pins(void)
+{
+    pins = hal_malloc(sizeof(*pins));
+    if (!pins)
+        return -ENOMEM;
+    for (int i = 0; i < 3; i++) {
+        int r = hal_pin_bit_newf(HAL_OUT, &pins->is_type[i], comp_id, "kinstype.is-%d", i);
+        if (r < 0)
+            return r;
+    }
+    int r = hal_pin_s32_newf(HAL_IO, &pins->userk_fct, comp_id, "userk.fct");
+    if (r < 0)
+        return r;
+    return hal_pin_s32_newf(HAL_IO, &pins->userk_ict, comp_id, "userk.ict");
+}
+
+/* Parse the arguments, make the pins, start in type 0. */
+int rtapi_app_main(void)
+{
+    char why[160];
+    const char *map = coordinates && *coordinates ? coordinates : switchkins_def.default_coordinates;
+    if (kins_coords_parse(map, &coords, why, sizeof(why)) < 0) {
+        rtapi_print_msg(RTAPI_MSG_ERR, "%s: ERROR: %s\n", switchkins_def.name, why);
+        return -EINVAL;
+    }
+    identity_first = switchkins_def.identity_first_allowed && sparm &&
+                     !strcmp(sparm, "identityfirst");
+    kins_ops.name = switchkins_def.name;
+    comp_id = hal_init(switchkins_def.name);
+    if (comp_id < 0)
+        return comp_id;
+    int r = export_common_pins();
+    if (r == 0 && switchkins_def.setup)
+        r = switchkins_def.setup(comp_id, sparm ? sparm : "");
+    if (r < 0) {
+        rtapi_print_msg(RTAPI_MSG_ERR, "%s: ERROR: setup failed (%d)\n", switchkins_def.name, r);
+        hal_exit(comp_id);
+        return r;
+    }
+    kinematicsSwitch(0);
+    hal_ready(comp_id);
+    return 0;
+}
+
+/* Remove the component. */
+void rtapi_app_exit(void)
+{
+    hal_exit(comp_id);
+}

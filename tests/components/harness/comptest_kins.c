@@ -1,0 +1,77 @@
+/* comptest_kins.c: comptest commands that call a loaded kinematics module's exported functions. */
+#include <dlfcn.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "emc/kinematics/kins_ops.h"
+#include "emc/kinematics/kins_coords.h"
+
+/* The module's kins_ops table, checked, or NULL after printing why. */
+static const kins_ops_t *kins_table(void *module)
+{
+    char why[200];
+    const kins_ops_t *ops = module ? dlsym(module, "kins_ops") : NULL;
+    if (kins_ops_check(ops, why, sizeof(why)) < 0) {
+        printf("kins_ops: %s\n", why);
+        return NULL;
+    }
+    return ops;
+}
+
+/* kfwd J0 J1 ...: forward kinematics from the given joints (others 0); prints rc and the pose. */
+static void cmd_kfwd(const kins_ops_t *ops, int argc, char **argv)
+{
+    double joints[KINS_MAX_JOINTS] = {0};
+    EmcPose pos;
+    KINEMATICS_FORWARD_FLAGS ff = 0;
+    KINEMATICS_INVERSE_FLAGS fi = 0;
+    memset(&pos, 0, sizeof(pos));
+    for (int i = 1; i < argc && i <= KINS_MAX_JOINTS; i++)
+        joints[i - 1] = strtod(argv[i], NULL);
+    int rc = ops->forward(joints, &pos, &ff, &fi);
+    printf("fwd %d:", rc);
+    for (int a = 0; a < KINS_AXES; a++)
+        printf(" %c=%.6f", kins_axis_letter(a), kins_pose_get(&pos, a));
+    printf("\n");
+}
+
+/* kinv N X Y Z A B C U V W: inverse kinematics; prints rc and the first N joints. */
+static void cmd_kinv(const kins_ops_t *ops, int argc, char **argv)
+{
+    double joints[KINS_MAX_JOINTS] = {0};
+    EmcPose pos;
+    KINEMATICS_FORWARD_FLAGS ff = 0;
+    KINEMATICS_INVERSE_FLAGS fi = 0;
+    memset(&pos, 0, sizeof(pos));
+    int n = argc > 1 ? atoi(argv[1]) : 0;
+    if (n < 0 || n > KINS_MAX_JOINTS)
+        n = KINS_MAX_JOINTS;
+    for (int a = 0; a < KINS_AXES && a + 2 < argc; a++)
+        kins_pose_set(&pos, a, strtod(argv[a + 2], NULL));
+    int rc = ops->inverse(&pos, joints, &fi, &ff);
+    printf("inv %d:", rc);
+    for (int j = 0; j < n; j++)
+        printf(" j%d=%.6f", j, joints[j]);
+    printf("\n");
+}
+
+/* Handle a kinematics command; 1 when argv[0] was one. */
+int comptest_kins_dispatch(void *module, int argc, char **argv)
+{
+    const char *c = argv[0];
+    if (strcmp(c, "kfwd") && strcmp(c, "kinv") && strcmp(c, "ktype") && strcmp(c, "kswitch"))
+        return 0;
+    const kins_ops_t *ops = kins_table(module);
+    if (!ops)
+        return 1;
+    if (!strcmp(c, "kfwd"))
+        cmd_kfwd(ops, argc, argv);
+    else if (!strcmp(c, "kinv"))
+        cmd_kinv(ops, argc, argv);
+    else if (!strcmp(c, "ktype"))
+        printf("type %d switchable %d\n", (int)ops->type(), ops->switchable());
+    else
+        printf("switch %d -> %d, type %d\n", argc > 1 ? atoi(argv[1]) : 0,
+               ops->switch_type(argc > 1 ? atoi(argv[1]) : 0), (int)ops->type());
+    return 1;
+}
