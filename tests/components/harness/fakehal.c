@@ -55,7 +55,7 @@ int fake_ready(void) { return comp_ready; }
 int fake_exited(void) { return comp_exited; }
 
 /* Register a new item; returns it or NULL on duplicates/overflow. */
-static fake_item_t *add_item(const char *name, fake_kind_t kind)
+static fake_item_t *add_item(const char *name, fake_kind_t kind, int comp_id)
 {
     if (strlen(name) > HAL_NAME_LEN) {
         printf("fakehal: name too long '%s'\n", name);
@@ -72,15 +72,16 @@ static fake_item_t *add_item(const char *name, fake_kind_t kind)
     memset(it, 0, sizeof(*it));
     strcpy(it->name, name);
     it->kind = kind;
+    it->comp_id = comp_id;
     return it;
 }
 
 /* Create a pin whose pointer lives at ptr. */
-static int new_pin(hal_type_t t, int dir, void **ptr, const char *fmt, va_list ap)
+static int new_pin(hal_type_t t, int dir, void **ptr, int id, const char *fmt, va_list ap)
 {
     char name[256];
     vsnprintf(name, sizeof(name), fmt, ap);
-    fake_item_t *it = add_item(name, FAKE_PIN);
+    fake_item_t *it = add_item(name, FAKE_PIN, id);
     if (!it)
         return -22;
     it->type = t;
@@ -92,11 +93,11 @@ static int new_pin(hal_type_t t, int dir, void **ptr, const char *fmt, va_list a
 }
 
 /* Create a param stored at data. */
-static int new_param(hal_type_t t, int dir, void *data, const char *fmt, va_list ap)
+static int new_param(hal_type_t t, int dir, void *data, int id, const char *fmt, va_list ap)
 {
     char name[256];
     vsnprintf(name, sizeof(name), fmt, ap);
-    fake_item_t *it = add_item(name, FAKE_PARAM);
+    fake_item_t *it = add_item(name, FAKE_PARAM, id);
     if (!it)
         return -22;
     it->type = t;
@@ -108,15 +109,15 @@ static int new_param(hal_type_t t, int dir, void *data, const char *fmt, va_list
 #define FAKE_PIN_NEWF(tn, T, ctype) \
     int hal_pin_##tn##_newf(hal_pin_dir_t dir, ctype **p, int id, const char *fmt, ...) \
     { \
-        va_list ap; va_start(ap, fmt); (void)id; \
-        int r = new_pin(T, dir, (void **)p, fmt, ap); \
+        va_list ap; va_start(ap, fmt); \
+        int r = new_pin(T, dir, (void **)p, id, fmt, ap); \
         va_end(ap); return r; \
     }
 #define FAKE_PARAM_NEWF(tn, T, ctype) \
     int hal_param_##tn##_newf(hal_param_dir_t dir, ctype *p, int id, const char *fmt, ...) \
     { \
-        va_list ap; va_start(ap, fmt); (void)id; \
-        int r = new_param(T, dir, (void *)p, fmt, ap); \
+        va_list ap; va_start(ap, fmt); \
+        int r = new_param(T, dir, (void *)p, id, fmt, ap); \
         va_end(ap); return r; \
     }
 
@@ -138,8 +139,8 @@ FAKE_PARAM_NEWF(u64, HAL_U64, hal_u64_t)
 int hal_export_funct(const char *name, void (*funct)(void *, long), void *arg,
                      int uses_fp, int reentrant, int comp_id)
 {
-    (void)uses_fp; (void)reentrant; (void)comp_id;
-    fake_item_t *it = add_item(name, FAKE_FUNCT);
+    (void)uses_fp; (void)reentrant;
+    fake_item_t *it = add_item(name, FAKE_FUNCT, comp_id);
     if (!it)
         return -22;
     it->funct = funct;
@@ -169,8 +170,22 @@ int hal_init(const char *name)
 /* Mark the component ready. */
 int hal_ready(int comp_id) { (void)comp_id; comp_ready = 1; return 0; }
 
-/* Record that the component was removed. */
-int hal_exit(int comp_id) { (void)comp_id; comp_exited = 1; return 0; }
+/* Record that the component was removed and drop its pins, params and functs. */
+int hal_exit(int comp_id)
+{
+    int kept = 0;
+    for (int i = 0; i < n_items; i++) {
+        if (items[i].comp_id != comp_id) {
+            items[kept++] = items[i];
+            continue;
+        }
+        if (items[i].kind == FAKE_PIN)
+            free(items[i].data);
+    }
+    n_items = kept;
+    comp_exited = 1;
+    return 0;
+}
 
 /* One hal_malloc block: kept on a list, as HAL memory lives until HAL goes away. */
 typedef struct fake_block {
@@ -263,8 +278,7 @@ size_t rtapi_strlcpy(char *dst, const char *src, size_t size)
 /* Generic pin creation by name and type. */
 int hal_pin_new(const char *name, hal_type_t type, hal_pin_dir_t dir, void **data_ptr_addr, int comp_id)
 {
-    (void)comp_id;
-    fake_item_t *it = add_item(name, FAKE_PIN);
+    fake_item_t *it = add_item(name, FAKE_PIN, comp_id);
     if (!it)
         return -22;
     it->type = type;

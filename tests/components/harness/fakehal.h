@@ -9,6 +9,7 @@ typedef enum { FAKE_PIN, FAKE_PARAM, FAKE_FUNCT } fake_kind_t;
 typedef struct {
     char name[HAL_NAME_LEN + 1];
     fake_kind_t kind;
+    int comp_id;                     /* owner; hal_exit removes its items */
     hal_type_t type;
     int dir;
     void **pin_ptr;                  /* pins: address of the component's pointer */

@@ -1,0 +1,3 @@
+#!/bin/bash
+# millturn turning map: known poses, round trips, handedness.
+exec "$EMC2_HOME/objects/unit/millturn_unit"
