@@ -10,6 +10,6 @@ author "OpenEMC";
 ;;
 hal_s64_t v = in;
 sign = v < 0;
-out = v < 0 ? -v : v;
+out = v >= 0 ? v : (v == INT64_MIN ? INT64_MAX : -v);  /* the most negative value saturates */
 is_positive = v > 0;
 is_negative = v < 0;

@@ -25,7 +25,7 @@ if (en && !old_enable) {
     int t = type_;
     valid = 1;
     if (t == 1 || t == 2) {
-        if (q < 0.5 || q > 2.0 || f0 > fs / 2.0 || f0 <= 0.0) {
+        if (!(q >= 0.5 && q <= 2.0 && f0 > 0.0 && f0 <= fs / 2.0)) {  /* NaN fails too */
             valid = 0;
         } else {
             w = 2.0 * M_PI * f0 / fs;

@@ -8,19 +8,14 @@ license "GPL";
 author "OpenEMC";
 ;;
 double v = in;
-if (clamp) {
-    if (v > 2147483647.0) {
-        out = 2147483647LL;
-        out_of_range = 1;
-    } else if (v < -2147483648.0) {
-        out = (-2147483648LL);
-        out_of_range = 1;
-    } else {
-        out = (int32_t)v;
-        out_of_range = 0;
-    }
+int inside = v >= -2147483648.0 && v < 2147483648.0;  /* FALSE for NaN too: every comparison fails */
+if (inside) {
+    out = (int32_t)v;
+    out_of_range = clamp ? 0 : (double)(int32_t)v != v;
+} else if (clamp) {
+    out = v >= 2147483648.0 ? 2147483647LL : (-2147483648LL);
+    out_of_range = 1;
 } else {
-    int32_t o = (int32_t)v;
-    out = o;
-    out_of_range = (double)o != v;
+    out = (-2147483648LL);  /* what x86 gives for an unrepresentable value */
+    out_of_range = 1;
 }

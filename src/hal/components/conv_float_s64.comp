@@ -8,19 +8,14 @@ license "GPL";
 author "OpenEMC";
 ;;
 double v = in;
-if (clamp) {
-    if (v > 9.223372036854776e+18) {
-        out = 9223372036854775807LL;
-        out_of_range = 1;
-    } else if (v < -9.223372036854776e+18) {
-        out = (-9223372036854775807LL - 1);
-        out_of_range = 1;
-    } else {
-        out = (int64_t)v;
-        out_of_range = 0;
-    }
+int inside = v >= -9223372036854775808.0 && v < 9223372036854775808.0;  /* FALSE for NaN too: every comparison fails */
+if (inside) {
+    out = (int64_t)v;
+    out_of_range = clamp ? 0 : (double)(int64_t)v != v;
+} else if (clamp) {
+    out = v >= 9223372036854775808.0 ? 9223372036854775807LL : (-9223372036854775807LL - 1);
+    out_of_range = 1;
 } else {
-    int64_t o = (int64_t)v;
-    out = o;
-    out_of_range = (double)o != v;
+    out = (-9223372036854775807LL - 1);  /* what x86 gives for an unrepresentable value */
+    out_of_range = 1;
 }

@@ -8,19 +8,14 @@ license "GPL";
 author "OpenEMC";
 ;;
 double v = in;
-if (clamp) {
-    if (v > 4294967295.0) {
-        out = 4294967295LL;
-        out_of_range = 1;
-    } else if (v < 0.0) {
-        out = 0LL;
-        out_of_range = 1;
-    } else {
-        out = (uint32_t)v;
-        out_of_range = 0;
-    }
+int inside = v >= 0.0 && v < 4294967296.0;  /* FALSE for NaN too: every comparison fails */
+if (inside) {
+    out = (uint32_t)v;
+    out_of_range = clamp ? 0 : (double)(uint32_t)v != v;
+} else if (clamp) {
+    out = v >= 4294967296.0 ? 4294967295LL : 0LL;
+    out_of_range = 1;
 } else {
-    uint32_t o = (uint32_t)v;
-    out = o;
-    out_of_range = (double)o != v;
+    out = (v < 0.0 && v > -9223372036854775808.0) ? (uint32_t)(int64_t)v : 0;  /* negative values wrap */
+    out_of_range = 1;
 }

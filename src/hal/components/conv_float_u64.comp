@@ -8,19 +8,14 @@ license "GPL";
 author "OpenEMC";
 ;;
 double v = in;
-if (clamp) {
-    if (v > 1.8446744073709552e+19) {
-        out = 18446744073709551615ULL;
-        out_of_range = 1;
-    } else if (v < 0.0) {
-        out = 0LL;
-        out_of_range = 1;
-    } else {
-        out = (uint64_t)v;
-        out_of_range = 0;
-    }
+int inside = v >= 0.0 && v < 18446744073709551616.0;  /* FALSE for NaN too: every comparison fails */
+if (inside) {
+    out = (uint64_t)v;
+    out_of_range = clamp ? 0 : (double)(uint64_t)v != v;
+} else if (clamp) {
+    out = v >= 18446744073709551616.0 ? 18446744073709551615ULL : 0LL;
+    out_of_range = 1;
 } else {
-    uint64_t o = (uint64_t)v;
-    out = o;
-    out_of_range = (double)o != v;
+    out = (v < 0.0 && v > -9223372036854775808.0) ? (uint64_t)(int64_t)v : 0;  /* negative values wrap */
+    out_of_range = 1;
 }

@@ -10,4 +10,6 @@ license "GPL";
 author "OpenEMC";
 ;;
 value += (in - value) * gain;
-out = (hal_s32_t)floor(value * scale + 0.5);
+double o = floor(value * scale + 0.5);
+if (o != o) o = 0.0;  /* NaN gain or scale: report 0 */
+out = o >= 2147483647.0 ? 2147483647 : o <= -2147483648.0 ? (-2147483647 - 1) : (hal_s32_t)o;

@@ -17,7 +17,7 @@ if (first) {
     first = 0;
 }
 if (enable) {
-    double v = out + (double)(c - old_counts) * scale;
+    double v = out + (double)(int)((unsigned)c - (unsigned)old_counts) * scale;  /* wrap-safe */
     if (v > max_out) v = max_out;
     if (v < min_out) v = min_out;
     out = v;

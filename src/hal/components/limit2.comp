@@ -11,6 +11,7 @@ license "GPL";
 author "OpenEMC";
 ;;
 double v = in, step = maxv * fperiod;
+if (v != v) v = old_out;  /* NaN input: hold the last output */
 if (v > max_) v = max_;
 if (v < min_) v = min_;
 if (!load) {

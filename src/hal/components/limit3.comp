@@ -30,7 +30,8 @@ if (dv <= 0) dv = 1e-12;
 dist = target - pos;
 lo = vel - dv;
 hi = vel + dv;
-if (fabs(dist / fperiod) <= dv && dist / fperiod >= lo && dist / fperiod <= hi) {
+if (fabs(dist / fperiod) <= dv && fabs(dist / fperiod) <= vmax &&
+    dist / fperiod >= lo && dist / fperiod <= hi) {
     vel = dist / fperiod;
     pos = target;
 } else {

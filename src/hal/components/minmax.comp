@@ -3,16 +3,14 @@ pin in float in;
 pin in bit reset "When TRUE, min and max are set to in";
 pin out float max_;
 pin out float min_;
-variable int started;
 function _;
 license "GPL";
 author "OpenEMC";
 ;;
 double v = in;
-if (reset || !started) {
+if (reset) {
     max_ = v;
     min_ = v;
-    started = 1;
 } else {
     if (v > max_) max_ = v;
     if (v < min_) min_ = v;

@@ -43,7 +43,7 @@ static void muxg_funct(void *arg, long period)
     m->elapsed = (hal_u32_t)(m->stable_ns / 1000);
     if (m->stable_ns / 1000 < (long long)*m->debounce_us)
         return;
-    if ((int)sel >= m->sel.size || (sel == 0 && *m->suppress))
+    if (sel >= (unsigned)m->sel.size || (sel == 0 && *m->suppress))
         return;
     m->selected = sel;
     comp_value_write(m->out, m->sel.out_type, comp_value_read(m->in[sel], m->sel.in_type));

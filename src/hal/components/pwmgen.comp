@@ -40,7 +40,7 @@ static void pwm_update_one(struct __comp_state *__comp_inst)
     if (mag < min_dc) mag = min_dc;
     if (personality == 0 && d < 0) mag = 0;
     if (!enable) mag = 0;
-    duty = d < 0 ? -mag : mag;
+    duty = (d < 0 && mag > 0) ? -mag : mag;
     curr_dc = duty;
 }
 

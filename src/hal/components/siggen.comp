@@ -30,14 +30,16 @@ FUNCTION(update) {
         p = 0.5;
     } else {
         double inc = frequency * ps;
+        if (inc != inc || inc == -INFINITY)  /* NaN or -inf: hold the phase */
+            inc = 0.0;
         if (inc > 0.5) {
             *frequency_ptr = 0.5 / ps;
             inc = 0.5;
         }
         p += inc;
     }
-    while (p >= 1.0) p -= 1.0;
-    while (p < 0.0) p += 1.0;
+    p -= floor(p);  /* wrap into [0,1) in one step, whatever the size */
+    if (p >= 1.0) p = 0.0;  /* a tiny negative phase rounds up to 1 */
     phase = p;
     sq = p > 0.5 ? 1.0 : -1.0;
     clock = p > 0.5;

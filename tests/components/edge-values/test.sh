@@ -1,0 +1,157 @@
+#!/bin/bash
+# Edge values that once gave undefined C or drifting results: each case loads one module in the fake HAL.
+run() { "$EMC2_HOME/objects/unit/comptest" | grep -v '^hal_init\|^rtapi_app_main'; }
+echo "time: ten 100 ms periods are exactly one second (integer ns, no float drift)"
+run <<'S'
+load time
+functs time.0
+period 100000000
+set time.0.start 1
+cycle 9
+get time.0.seconds
+cycle 1
+get time.0.seconds
+S
+echo "pwmgen: a negative value with the pwm-only output gives curr-dc 0, not -0"
+run <<'S'
+load pwmgen output_type=0
+functs pwmgen.update
+set pwmgen.0.enable 1
+set pwmgen.0.value -0.5
+cycle 1
+get pwmgen.0.curr-dc
+set pwmgen.0.enable 0
+cycle 1
+get pwmgen.0.curr-dc
+S
+echo "abs_s32/abs_s64: the most negative value saturates"
+run <<'S'
+load abs_s32
+functs abs-s32.0
+set abs-s32.0.in -2147483648
+cycle 1
+get abs-s32.0.out abs-s32.0.sign
+S
+run <<'S'
+load abs_s64
+functs abs-s64.0
+set abs-s64.0.in -9223372036854775808
+cycle 1
+get abs-s64.0.out abs-s64.0.sign
+S
+echo "conv_float_u64: exactly 2^64 and NaN are out of range, clamped or not"
+run <<'S'
+load conv_float_u64 count=2
+functs conv-float-u64.0 conv-float-u64.1
+set conv-float-u64.1.clamp 1
+set conv-float-u64.0.in 18446744073709551616
+set conv-float-u64.1.in 18446744073709551616
+cycle 1
+get conv-float-u64.0.out conv-float-u64.0.out-of-range conv-float-u64.1.out conv-float-u64.1.out-of-range
+set conv-float-u64.0.in nan
+set conv-float-u64.1.in nan
+cycle 1
+get conv-float-u64.0.out conv-float-u64.0.out-of-range conv-float-u64.1.out conv-float-u64.1.out-of-range
+set conv-float-u64.0.in -2.5
+cycle 1
+get conv-float-u64.0.out conv-float-u64.0.out-of-range
+S
+echo "conv_float_s64 and conv_float_s32: +2^63 / +2^31 clamp to the maximum, -inf to the minimum"
+run <<'S'
+load conv_float_s64
+functs conv-float-s64.0
+set conv-float-s64.0.clamp 1
+set conv-float-s64.0.in 9223372036854775808
+cycle 1
+get conv-float-s64.0.out conv-float-s64.0.out-of-range
+S
+run <<'S'
+load conv_float_s32
+functs conv-float-s32.0
+set conv-float-s32.0.clamp 1
+set conv-float-s32.0.in 2147483648
+cycle 1
+get conv-float-s32.0.out conv-float-s32.0.out-of-range
+set conv-float-s32.0.in -inf
+cycle 1
+get conv-float-s32.0.out conv-float-s32.0.out-of-range
+set conv-float-s32.0.clamp 0
+set conv-float-s32.0.in nan
+cycle 1
+get conv-float-s32.0.out conv-float-s32.0.out-of-range
+S
+echo "biquad: a NaN Q is refused (valid 0, out follows in)"
+run <<'S'
+load biquad
+functs biquad.0
+set biquad.0.type 1
+set biquad.0.Q nan
+set biquad.0.in 3
+set biquad.0.enable 1
+cycle 2
+get biquad.0.valid biquad.0.out
+S
+echo "ilowpass: a result beyond s32 saturates instead of wrapping"
+run <<'S'
+load ilowpass
+functs ilowpass.0
+set ilowpass.0.gain 1
+set ilowpass.0.in 3000000
+cycle 1
+get ilowpass.0.out
+set ilowpass.0.in -3000000
+cycle 1
+get ilowpass.0.out
+S
+echo "siggen: NaN and -inf frequencies hold the phase; the waves recover at once"
+run <<'S'
+load siggen
+functs siggen.0.update
+period 250000000
+cycle 1
+get siggen.0.sawtooth
+set siggen.0.frequency nan
+cycle 1
+get siggen.0.sawtooth
+set siggen.0.frequency -inf
+cycle 1
+get siggen.0.sawtooth
+set siggen.0.frequency 1
+cycle 1
+get siggen.0.sawtooth siggen.0.square
+set siggen.0.frequency -1e300
+cycle 1
+get siggen.0.sawtooth
+S
+echo "limit3: a short move still obeys maxv (1 unit per 1 ms period at maxv 1000)"
+run <<'S'
+load limit3
+functs limit3.0
+set limit3.0.maxv 1000
+set limit3.0.in 5
+trace 3 limit3.0.out
+S
+echo "knob2float: counts wrapping past the s32 limit are one step"
+run <<'S'
+load knob2float
+functs knob2float.0
+set knob2float.0.enable 1
+set knob2float.0.scale 0.1
+set knob2float.0.max-out 100
+set knob2float.0.counts 2147483647
+cycle 1
+set knob2float.0.counts -2147483648
+cycle 1
+get knob2float.0.out
+S
+echo "mux_generic: a selection beyond 2^31 is out of range and leaves out alone"
+run <<'S'
+load mux_generic config=ff4
+functs mux-gen.00
+set mux-gen.00.in-float-01 7
+set mux-gen.00.sel-int 1
+cycle 1
+set mux-gen.00.sel-int 4294967295
+cycle 2
+get mux-gen.00.out-float mux-gen.00.selected
+S
