@@ -34,14 +34,27 @@ static inline double comp_value_read(const comp_value_t *v, char t)
     }
 }
 
-/* Store a double into a value of type letter t (C conversion). */
+/* x truncated to a 64-bit integer: NaN gives 0, beyond the range saturates (no undefined cast). */
+static inline long long comp_trunc_ll(double x)
+{
+    if (x != x) return 0;
+    if (x >= 9223372036854775807.0) return 9223372036854775807LL;
+    if (x <= -9223372036854775807.0) return -9223372036854775807LL - 1;
+    return (long long)x;
+}
+
+/* Store a double into a value of type letter t: s32 saturates, u32 wraps like a C cast. */
 static inline void comp_value_write(comp_value_t *v, char t, double x)
 {
     switch (t) {
     case 'b': v->b = x != 0.0; break;
     case 'f': v->f = x; break;
-    case 's': v->s = (hal_s32_t)(long long)x; break;
-    default: v->u = (hal_u32_t)(long long)x; break;
+    case 's': {
+        long long n = comp_trunc_ll(x);
+        v->s = n > 2147483647LL ? 2147483647 : n < -2147483648LL ? (-2147483647 - 1) : (hal_s32_t)n;
+        break;
+    }
+    default: v->u = (hal_u32_t)comp_trunc_ll(x); break;
     }
 }
 

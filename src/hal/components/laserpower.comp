@@ -30,6 +30,7 @@ static double velocity_ratio(double requested, double actual)
     double ratio;
     if (!(requested > 0)) return 1.0;
     ratio = fabs(actual) / requested;
+    if (ratio != ratio) return 0.0;  /* NaN velocity: laser off */
     return ratio > 1.0 ? 1.0 : ratio;
 }
 

@@ -272,11 +272,12 @@ static void start_refresh(struct __comp_state *__comp_inst)
     int want = page_num < (hal_u32_t)n_pages ? (int)page_num : n_pages;
     buf_len = 0;
     buf_pos = 0;
-    if (contrast != last_contrast) {
+    double c = contrast == contrast ? contrast : 0.0;  /* NaN counts as 0 */
+    if (c != last_contrast) {
         buf[buf_len++] = LCD_ESC;
         buf[buf_len++] = 'C';
-        buf[buf_len++] = contrast_byte(contrast);
-        last_contrast = contrast;
+        buf[buf_len++] = contrast_byte(c);
+        last_contrast = c;
     }
     if (!started || want != cur_page) buf[buf_len++] = LCD_CLEAR;
     else if (want < n_pages) buf[buf_len++] = LCD_HOME;

@@ -29,6 +29,8 @@ if (elapsed >= debounce_time) {
     selected = pending;
     if (!(suppress_no_input && pending == 0)) {
         out_f = in(pending);
-        out_s = (hal_s32_t)in(pending);
+        double v = in(pending);
+        out_s = v >= 2147483647.0 ? 2147483647 : v <= -2147483648.0 ? (-2147483647 - 1) :
+                v == v ? (hal_s32_t)v : 0;  /* saturate; NaN gives 0 */
     }
 }

@@ -18,7 +18,7 @@ reset arrives while the value is inside the range.  A reset edge while the value
 is still out of range is ignored.  The error starts cleared at load time.
 """;
 ;;
-int out_of_range = error_value < min_value || error_value > max_value;
+int out_of_range = !(error_value >= min_value && error_value <= max_value);  /* NaN is out of range */
 int edge = reset && !old_reset;
 old_reset = reset;
 if (out_of_range) latched = 1;

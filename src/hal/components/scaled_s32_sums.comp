@@ -9,4 +9,5 @@ author "OpenEMC";
 int i;
 double s = 0;
 for (i = 0; i < 4; i++) s += input(i) * scale(i);
-output = (hal_s32_t)s;
+if (s != s) s = 0.0;  /* NaN scale: 0 */
+output = s >= 2147483647.0 ? 2147483647 : s <= -2147483648.0 ? (-2147483647 - 1) : (hal_s32_t)s;

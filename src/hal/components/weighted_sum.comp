@@ -27,11 +27,11 @@ POST_EXPORT()
 static void wsum_one(struct __comp_state *__comp_inst)
 {
     int i;
-    hal_s32_t s = offset;
+    unsigned int s = (unsigned int)offset;  /* wraps like a 32-bit register, no UB */
     if (hold) return;
     for (i = 0; i < personality; i++)
-        if (bit_in(i)) s += bit_weight(i);
-    sum = s;
+        if (bit_in(i)) s += (unsigned int)bit_weight(i);
+    sum = (hal_s32_t)s;
 }
 
 /* Funct process_wsums: every group. */

@@ -56,6 +56,7 @@ static void button_logic(struct __comp_state *__comp_inst)
 /* Round to the nearest integer, halves away from zero, saturating at the s32 range. */
 static int round_s32(double v)
 {
+    if (v != v) return 0;
     if (v >= 2147483647.0) return 2147483647;
     if (v <= -2147483648.0) return -2147483647 - 1;
     return (int)(v >= 0 ? v + 0.5 : v - 0.5);
@@ -69,7 +70,9 @@ static void filters(struct __comp_state *__comp_inst)
         double c = coef(i);
         if (c < 0.0) c = 0.0;
         if (c > 1.0) c = 1.0;
-        acc[i] += c * (scale(i) * in(i) - acc[i]);
+        double target = scale(i) * in(i);
+        if (target - target == 0.0)  /* NaN or inf scale/input leaves the filter where it is */
+            acc[i] += c * (target - acc[i]);
         out(i) = round_s32(acc[i]);
     }
 }

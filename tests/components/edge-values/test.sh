@@ -155,3 +155,85 @@ set mux-gen.00.sel-int 4294967295
 cycle 2
 get mux-gen.00.out-float mux-gen.00.selected
 S
+echo "scaled_s32_sums: a sum beyond s32 saturates"
+run <<'S'
+load scaled_s32_sums
+functs scaled-s32-sums.0
+set scaled-s32-sums.0.input0 2000000000
+set scaled-s32-sums.0.scale0 2
+cycle 1
+get scaled-s32-sums.0.output
+set scaled-s32-sums.0.scale0 -2
+cycle 1
+get scaled-s32-sums.0.output
+S
+echo "xhc_hb04_util: an inf scale leaves the filter output where it was"
+run <<'S'
+load xhc_hb04_util
+functs xhc-hb04-util.0
+set xhc-hb04-util.0.in0 10
+cycle 1
+get xhc-hb04-util.0.out0
+set xhc-hb04-util.0.scale0 inf
+cycle 1
+get xhc-hb04-util.0.out0
+set xhc-hb04-util.0.scale0 1
+set xhc-hb04-util.0.in0 4
+cycle 1
+get xhc-hb04-util.0.out0
+S
+echo "weighted_sum: a sum past the s32 range wraps like a 32-bit register"
+run <<'S'
+load weighted_sum wsum_sizes=2
+functs process_wsums
+set wsum.0.offset 2147483647
+set wsum.0.bit.0.in 1
+cycle 1
+get wsum.0.sum
+S
+echo "laserpower: a NaN current velocity turns the laser off"
+run <<'S'
+load laserpower
+functs laserpower.0
+set laserpower.0.enable 1
+set laserpower.0.req-power 50
+set laserpower.0.req-vel 100
+set laserpower.0.cur-vel nan
+cycle 1
+get laserpower.0.output
+S
+echo "mux16: out-s saturates beyond s32 and gives 0 for NaN"
+run <<'S'
+load mux16
+functs mux16.0
+set mux16.0.in00 1e12
+cycle 1
+get mux16.0.out-s
+set mux16.0.in00 -1e12
+cycle 1
+get mux16.0.out-s
+set mux16.0.in00 nan
+cycle 1
+get mux16.0.out-s
+S
+echo "safety_latch: NaN is out of range and latches"
+run <<'S'
+load safety_latch
+functs safety-latch.0
+set safety-latch.0.min-value -1
+set safety-latch.0.max-value 1
+set safety-latch.0.error-value nan
+cycle 1
+get safety-latch.0.ok safety-latch.0.error
+S
+echo "demux_generic: NaN to an s32 output is 0, a huge float saturates"
+run <<'S'
+load demux_generic config=fs2
+functs demux-gen.00
+set demux-gen.00.in-float nan
+cycle 1
+get demux-gen.00.out-s32-00
+set demux-gen.00.in-float 1e300
+cycle 1
+get demux-gen.00.out-s32-00
+S
