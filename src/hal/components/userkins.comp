@@ -17,7 +17,7 @@ kins_ops table motion looks up.
 
 The module has no functions; motion calls the kinematics directly.""";
 ;;
-#include "emc/kinematics/kinematics.h"
+#include "kinematics.h"
 
 /* The single instance, whose pins the kinematics functions read and write. */
 #define USERKINS_INST struct __comp_state *__comp_inst = __comp_first_inst
