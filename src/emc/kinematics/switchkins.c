@@ -3,10 +3,8 @@
 #include "rtapi.h"
 #include "rtapi_app.h"
 #include "hal.h"
+#include "kins_entry.h"
 #include "switchkins.h"
-
-MODULE_LICENSE("GPL");
-MODULE_AUTHOR("OpenEMC");
 
 static char *coordinates = NULL;
 RTAPI_MP_STRING(coordinates, "Axis letter of each joint for the identity kinematics (type 1)");
@@ -24,7 +22,6 @@ static switchkins_pins_t *pins;
 static kins_coords_t coords;
 static int active_type;      /* 0, 1 or 2 as seen by motion */
 static int identity_first;   /* sparm=identityfirst: 0 means identity, 1 native */
-static int comp_id;
 
 /* The identity map in use (parsed coordinates=). */
 const kins_coords_t *switchkins_coords(void)
@@ -72,37 +69,16 @@ KINEMATICS_TYPE kinematicsType(void)
     return native_active() ? switchkins_def.native_type : KINEMATICS_BOTH;
 }
 
-/* These modules can switch. */
-int kinematicsSwitchable(void)
+/* Kinematics 0, 1 or 2 was selected (kins_entry checked it): show it on kinstype.is-N. */
+static void switched(int new_type)
 {
-    return 1;
-}
-
-/* Select kinematics 0, 1 or 2 and show it on kinstype.is-N; other values are refused. */
-int kinematicsSwitch(int new_type)
-{
-    if (new_type < 0 || new_type > 2) {
-        rtapi_print_msg(RTAPI_MSG_ERR, "kinematicsSwitch:BAD VALUE <%d>\n", new_type);
-        return -1;
-    }
     active_type = new_type;
     for (int i = 0; i < 3; i++)
         *pins->is_type[i] = (i == new_type);
-    return 0;
 }
 
-/* The ops table; its name is filled in from switchkins_def at load. */
-kins_ops_t kins_ops = { KINS_OPS_VERSION, sizeof(kins_ops_t), "switchkins",
-    kinematicsType, kinematicsForward, kinematicsInverse, kinematicsSwitchable, kinematicsSwitch };
-EXPORT_SYMBOL(kins_ops);
-EXPORT_SYMBOL(kinematicsType);
-EXPORT_SYMBOL(kinematicsForward);
-EXPORT_SYMBOL(kinematicsInverse);
-EXPORT_SYMBOL(kinematicsSwitchable);
-EXPORT_SYMBOL(kinematicsSwitch);
-
 /* Create kinstype.is-0/1/2 and userk.fct/ict. */
-static int export_common_pins(void)
+static int export_common_pins(int comp_id)
 {
     pins = hal_malloc(sizeof(*pins));
     if (!pins)
@@ -118,6 +94,20 @@ static int export_common_pins(void)
     return hal_pin_s32_newf(HAL_IO, &pins->userk_ict, comp_id, "userk.ict");
 }
 
+/* Make the shared and the module's pins, then start in type 0. */
+static int switchkins_build(int comp_id)
+{
+    int r = export_common_pins(comp_id);
+    if (r == 0 && switchkins_def.setup)
+        r = switchkins_def.setup(comp_id, sparm ? sparm : "");
+    if (r < 0) {
+        rtapi_print_msg(RTAPI_MSG_ERR, "%s: ERROR: setup failed (%d)\n", switchkins_def.name, r);
+        return r;
+    }
+    switched(0);
+    return 0;
+}
+
 /* Parse the arguments, make the pins, start in type 0. */
 int rtapi_app_main(void)
 {
@@ -129,25 +119,6 @@ int rtapi_app_main(void)
     }
     identity_first = switchkins_def.identity_first_allowed && sparm &&
                      !strcmp(sparm, "identityfirst");
-    kins_ops.name = switchkins_def.name;
-    comp_id = hal_init(switchkins_def.name);
-    if (comp_id < 0)
-        return comp_id;
-    int r = export_common_pins();
-    if (r == 0 && switchkins_def.setup)
-        r = switchkins_def.setup(comp_id, sparm ? sparm : "");
-    if (r < 0) {
-        rtapi_print_msg(RTAPI_MSG_ERR, "%s: ERROR: setup failed (%d)\n", switchkins_def.name, r);
-        hal_exit(comp_id);
-        return r;
-    }
-    kinematicsSwitch(0);
-    hal_ready(comp_id);
-    return 0;
-}
-
-/* Remove the component. */
-void rtapi_app_exit(void)
-{
-    hal_exit(comp_id);
+    kins_entry_t entry = {switchkins_def.name, switchkins_build, 2, switched};
+    return kins_entry_start(&entry);
 }

@@ -1,12 +1,9 @@
 /* matrixkins.c: XYZ correction kinematics; params C_xx..C_zz give joints = C * (X Y Z). */
 #include "rtapi.h"
-#include "rtapi_app.h"
 #include "hal.h"
-#include "emc/kinematics/kinematics.h"
+#include "emc/kinematics/kins_frame.h"
 #include "cartesian_math.h"
 
-MODULE_LICENSE("GPL");
-MODULE_AUTHOR("OpenEMC");
 MODULE_DESCRIPTION("Matrix kinematics: a 3x3 correction matrix between XYZ and joints 0-2");
 
 /* The nine matrix entries live in HAL memory so halcmd setp can change them. */
@@ -15,7 +12,6 @@ typedef struct {
 } matrix_params_t;
 
 static matrix_params_t *params;
-static int comp_id;
 
 /* Snapshot of the HAL params as a plain matrix. */
 static void current_matrix(matrix3_t *mat)
@@ -26,51 +22,24 @@ static void current_matrix(matrix3_t *mat)
 }
 
 /* Joints -> world with the inverted matrix; -1 when it is singular. */
-int kinematicsForward(const double *joint, EmcPose *world,
-                      const KINEMATICS_FORWARD_FLAGS *fflags, KINEMATICS_INVERSE_FLAGS *iflags)
+static int matrix_fwd(const double *joints, EmcPose *pos)
 {
     matrix3_t mat;
-    (void)fflags;
-    (void)iflags;
     current_matrix(&mat);
-    return matrix_forward_kins(&mat, joint, world);
+    return matrix_forward_kins(&mat, joints, pos);
 }
 
 /* World -> joints through the matrix. */
-int kinematicsInverse(const EmcPose *world, double *joint,
-                      const KINEMATICS_INVERSE_FLAGS *iflags, KINEMATICS_FORWARD_FLAGS *fflags)
+static int matrix_inv(const EmcPose *pos, double *joints)
 {
     matrix3_t mat;
-    (void)iflags;
-    (void)fflags;
     current_matrix(&mat);
-    matrix_inverse_kins(&mat, world, joint);
+    matrix_inverse_kins(&mat, pos, joints);
     return 0;
 }
-
-/* Both directions are available. */
-KINEMATICS_TYPE kinematicsType(void)
-{
-    return KINEMATICS_BOTH;
-}
-
-/* Not switchable. */
-int kinematicsSwitchable(void)
-{
-    return 0;
-}
-
-/* No-op: there is only one kinematics. */
-int kinematicsSwitch(int switchkins_type)
-{
-    (void)switchkins_type;
-    return 0;
-}
-
-KINS_EXPORT_OPS("matrixkins");
 
 /* Create matrixkins.C_xx .. C_zz (RW), set to the identity matrix. */
-static int make_params(void)
+static int make_params(int comp_id)
 {
     static const char axis[3] = {'x', 'y', 'z'};
     params = hal_malloc(sizeof(*params));
@@ -88,24 +57,7 @@ static int make_params(void)
     return 0;
 }
 
-/* Register the component and its matrix params. */
-int rtapi_app_main(void)
-{
-    comp_id = hal_init("matrixkins");
-    if (comp_id < 0)
-        return comp_id;
-    int rc = make_params();
-    if (rc < 0) {
-        rtapi_print_msg(RTAPI_MSG_ERR, "matrixkins: ERROR: cannot create params\n");
-        hal_exit(comp_id);
-        return rc;
-    }
-    hal_ready(comp_id);
-    return 0;
-}
-
-/* Remove the component. */
-void rtapi_app_exit(void)
-{
-    hal_exit(comp_id);
-}
+const kins_frame_def_t kins_frame_def = {
+    .name = "matrixkins", .type = KINEMATICS_BOTH, .setup = make_params,
+    .setup_error = "cannot create params", .forward = matrix_fwd, .inverse = matrix_inv,
+};

@@ -1,13 +1,10 @@
 /* maxkins.c: maxkins, kinematics of a tabletop mill with a tilting B head and a rotary C table. */
 #include "rtapi.h"
-#include "rtapi_app.h"
 #include "hal.h"
-#include "emc/kinematics/kinematics.h"
+#include "emc/kinematics/kins_frame.h"
 #include "emc/kinematics/kins_coords.h"
 #include "rotary_math.h"
 
-MODULE_LICENSE("GPL");
-MODULE_AUTHOR("OpenEMC");
 MODULE_DESCRIPTION("Kinematics for a mill with a tilting B head and a rotary C table (XYZABCUVW)");
 
 /* The module's pins. */
@@ -17,7 +14,6 @@ typedef struct {
 } maxkins_pins_t;
 
 static maxkins_pins_t *pins;
-static int comp_id;
 
 /* Copy a pose into the nine-value XYZABCUVW order. */
 static void pose_to_axes(const EmcPose *pos, double axes[9])
@@ -27,11 +23,8 @@ static void pose_to_axes(const EmcPose *pos, double axes[9])
 }
 
 /* Joints 0..8 (XYZABCUVW) -> world pose. */
-int kinematicsForward(const double *joint, EmcPose *world,
-                      const KINEMATICS_FORWARD_FLAGS *fflags, KINEMATICS_INVERSE_FLAGS *iflags)
+static int maxkins_fwd(const double *joint, EmcPose *world)
 {
-    (void)fflags;
-    (void)iflags;
     double axes[9];
     if (maxkins_forward(*pins->pivot_length, *pins->conventional_directions, joint, axes) < 0)
         return -1;
@@ -41,11 +34,8 @@ int kinematicsForward(const double *joint, EmcPose *world,
 }
 
 /* World pose -> joints 0..8. */
-int kinematicsInverse(const EmcPose *world, double *joint,
-                      const KINEMATICS_INVERSE_FLAGS *iflags, KINEMATICS_FORWARD_FLAGS *fflags)
+static int maxkins_inv(const EmcPose *world, double *joint)
 {
-    (void)iflags;
-    (void)fflags;
     double axes[9], joints[9];
     pose_to_axes(world, axes);
     if (maxkins_inverse(*pins->pivot_length, *pins->conventional_directions, axes, joints) < 0)
@@ -55,29 +45,8 @@ int kinematicsInverse(const EmcPose *world, double *joint,
     return 0;
 }
 
-/* Both directions are available. */
-KINEMATICS_TYPE kinematicsType(void)
-{
-    return KINEMATICS_BOTH;
-}
-
-/* maxkins cannot switch. */
-int kinematicsSwitchable(void)
-{
-    return 0;
-}
-
-/* No-op: there is only one kinematics. */
-int kinematicsSwitch(int switchkins_type)
-{
-    (void)switchkins_type;
-    return 0;
-}
-
-KINS_EXPORT_OPS("maxkins");
-
 /* Make the pins. */
-static int maxkins_make_pins(void)
+static int maxkins_make_pins(int comp_id)
 {
     pins = hal_malloc(sizeof(*pins));
     if (!pins)
@@ -90,24 +59,16 @@ static int maxkins_make_pins(void)
                             "maxkins.conventional-directions");
 }
 
-/* Register the component and its pins. */
-int rtapi_app_main(void)
+/* Make the pins; report a failure with its code. */
+static int maxkins_setup(int comp_id)
 {
-    comp_id = hal_init("maxkins");
-    if (comp_id < 0)
-        return comp_id;
-    int r = maxkins_make_pins();
-    if (r < 0) {
+    int r = maxkins_make_pins(comp_id);
+    if (r < 0)
         rtapi_print_msg(RTAPI_MSG_ERR, "maxkins: ERROR: pin export failed (%d)\n", r);
-        hal_exit(comp_id);
-        return r;
-    }
-    hal_ready(comp_id);
-    return 0;
+    return r;
 }
 
-/* Remove the component. */
-void rtapi_app_exit(void)
-{
-    hal_exit(comp_id);
-}
+const kins_frame_def_t kins_frame_def = {
+    .name = "maxkins", .type = KINEMATICS_BOTH, .setup = maxkins_setup,
+    .forward = maxkins_fwd, .inverse = maxkins_inv,
+};

@@ -2,8 +2,6 @@
 #ifndef FIVEAXIS_TCPSWITCH_H
 #define FIVEAXIS_TCPSWITCH_H
 
-#include "hal.h"
-
 /* What a module supplies; tcpswitch.c provides the entry points and the exports. */
 typedef struct tcpswitch_def {
     const char *name;      /* HAL component name, e.g. "xyzab_tdr_kins" */
@@ -18,9 +16,5 @@ typedef struct tcpswitch_def {
 
 /* Each module defines exactly one of these. */
 extern const tcpswitch_def_t tcpswitch_def;
-
-/* Make `count` float IN pins <prefix>.<names[i]> starting at 0; 0 or negative errno. */
-int tcpswitch_float_pins(int comp_id, const char *prefix, const char *const *names,
-                         hal_float_t **pins[], int count);
 
 #endif

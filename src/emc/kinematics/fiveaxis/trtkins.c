@@ -46,9 +46,11 @@ static int trtkins_make_pins(const char *prefix, int comp_id)
     return r;
 }
 
-/* Make the pins of the variant and check coordinates=; 0 or negative errno. */
-int trtkins_setup(const trtkins_variant_t *v, int comp_id)
+/* Switchable-frame setup: check coordinates= and make the pins; 0 or negative errno. */
+int trtkins_setup(int comp_id, const char *sparm)
 {
+    const trtkins_variant_t *v = &trtkins_variant;
+    (void)sparm;
     char missing = axis_map_missing(switchkins_coords(), v->axes);
     if (missing) {
         rtapi_print_msg(RTAPI_MSG_ERR, "%s: ERROR: coordinates need a joint for axis %c\n",
@@ -74,8 +76,9 @@ static table2_geom_t trtkins_geom(const trtkins_variant_t *v)
 }
 
 /* Native forward kinematics through the pins' geometry. */
-int trtkins_forward(const trtkins_variant_t *v, const double *joints, EmcPose *pos)
+int trtkins_forward(const double *joints, EmcPose *pos)
 {
+    const trtkins_variant_t *v = &trtkins_variant;
     const kins_coords_t *coords = switchkins_coords();
     table2_geom_t g = trtkins_geom(v);
     double axes[9], world[3];
@@ -87,8 +90,9 @@ int trtkins_forward(const trtkins_variant_t *v, const double *joints, EmcPose *p
 }
 
 /* Native inverse kinematics through the pins' geometry. */
-int trtkins_inverse(const trtkins_variant_t *v, const EmcPose *pos, double *joints)
+int trtkins_inverse(const EmcPose *pos, double *joints)
 {
+    const trtkins_variant_t *v = &trtkins_variant;
     table2_geom_t g = trtkins_geom(v);
     double world[3] = {pos->tran.x, pos->tran.y, pos->tran.z}, joint_xyz[3];
     double tilt = kins_pose_get(pos, v->primary_index);

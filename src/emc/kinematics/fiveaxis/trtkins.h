@@ -12,11 +12,14 @@ typedef struct {
     int primary_index;     /* axis index of the tilt in EmcPose order (3 A, 4 B) */
 } trtkins_variant_t;
 
-/* Make the pins of the variant and check coordinates=; 0 or negative errno. */
-int trtkins_setup(const trtkins_variant_t *v, int comp_id);
+/* The variant of the module being built; each trt module defines it. */
+extern const trtkins_variant_t trtkins_variant;
+
+/* Switchable-frame setup: check coordinates= and make the pins; 0 or negative errno. */
+int trtkins_setup(int comp_id, const char *sparm);
 /* Native forward kinematics through the pins' geometry. */
-int trtkins_forward(const trtkins_variant_t *v, const double *joints, EmcPose *pos);
+int trtkins_forward(const double *joints, EmcPose *pos);
 /* Native inverse kinematics through the pins' geometry. */
-int trtkins_inverse(const trtkins_variant_t *v, const EmcPose *pos, double *joints);
+int trtkins_inverse(const EmcPose *pos, double *joints);
 
 #endif

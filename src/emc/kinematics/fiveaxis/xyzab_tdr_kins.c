@@ -1,6 +1,7 @@
 /* xyzab_tdr_kins.c: xyzab_tdr_kins, tilting table A carrying a rotary B; type 0 identity, 1 TCP. */
 #include "rtapi.h"
 #include "hal.h"
+#include "emc/kinematics/kins_pins.h"
 #include "rotary_math.h"
 #include "tcpswitch.h"
 
@@ -9,27 +10,18 @@ MODULE_DESCRIPTION("Switchable kinematics for a table with tilt A (about X) carr
 /* Pin order: rot point x/y/z, offset x/y/z, tool offset. */
 enum { TDR_ROT_X, TDR_ROT_Y, TDR_ROT_Z, TDR_OFF_X, TDR_OFF_Y, TDR_OFF_Z, TDR_TOOL, TDR_PINS };
 
-static const char *const tdr_pin_names[TDR_PINS] = {
-    "x-rot-point", "y-rot-point", "z-rot-point", "x-offset", "y-offset", "z-offset", "tool-offset"
+static const kins_pin_def_t tdr_pin_defs[TDR_PINS] = {
+    {"x-rot-point", 0.0}, {"y-rot-point", 0.0}, {"z-rot-point", 0.0}, {"x-offset", 0.0},
+    {"y-offset", 0.0}, {"z-offset", 0.0}, {"tool-offset", 0.0}
 };
 
-/* The geometry pins (all float IN). */
-typedef struct {
-    hal_float_t *value[TDR_PINS];
-} tdr_pins_t;
-
-static tdr_pins_t *pins;
+/* The geometry pins (all float IN), in tdr_pin_defs order. */
+static hal_float_t **pins;
 
 /* Make the geometry pins. */
 static int setup(int comp_id, const char *prefix)
 {
-    hal_float_t **slots[TDR_PINS];
-    pins = hal_malloc(sizeof(*pins));
-    if (!pins)
-        return -ENOMEM;
-    for (int i = 0; i < TDR_PINS; i++)
-        slots[i] = &pins->value[i];
-    return tcpswitch_float_pins(comp_id, prefix, tdr_pin_names, slots, TDR_PINS);
+    return kins_float_pins(comp_id, prefix, tdr_pin_defs, TDR_PINS, &pins);
 }
 
 /* Geometry from the current pin values: A about X on the bed, B about Y on top. */
@@ -37,10 +29,10 @@ static table2_geom_t tdr_geom(void)
 {
     table2_geom_t g = {ROT_X, ROT_Y, {0, 0, 0}, {0, 0, 0}, 0, 0};
     for (int i = 0; i < 3; i++) {
-        g.rot_point[i] = *pins->value[TDR_ROT_X + i];
-        g.offset[i] = *pins->value[TDR_OFF_X + i];
+        g.rot_point[i] = *pins[TDR_ROT_X + i];
+        g.offset[i] = *pins[TDR_OFF_X + i];
     }
-    g.tool_offset = *pins->value[TDR_TOOL];
+    g.tool_offset = *pins[TDR_TOOL];
     return g;
 }
 

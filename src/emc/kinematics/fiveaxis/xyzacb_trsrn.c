@@ -6,18 +6,9 @@
 
 MODULE_DESCRIPTION("Switchable kinematics: rotary table A, spindle rotary C with nutating B head");
 
-/* TCP forward: table about X, nutation axis leaning from Y. */
-static int tcp_forward(const double *joints, double *world)
-{
-    return trsrn_tcp_forward(ROT_X, ROT_Y, joints, world);
-}
-
-/* TCP inverse. */
-static int tcp_inverse(const double *world, double *joints)
-{
-    return trsrn_tcp_inverse(ROT_X, ROT_Y, world, joints);
-}
+/* Table about X, nutation axis leaning from Y. */
+const trsrn_variant_t trsrn_variant = {ROT_X, ROT_Y};
 
 const tcpswitch_def_t tcpswitch_def = {
-    "xyzacb_trsrn", "xyzacb-trsrn", "XYZACB", trsrn_setup, tcp_forward, tcp_inverse
+    "xyzacb_trsrn", "xyzacb-trsrn", "XYZACB", trsrn_setup, trsrn_tcp_forward, trsrn_tcp_inverse
 };

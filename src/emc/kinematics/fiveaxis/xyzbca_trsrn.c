@@ -6,18 +6,9 @@
 
 MODULE_DESCRIPTION("Switchable kinematics: rotary table B, spindle rotary C with nutating A head");
 
-/* TCP forward: table about Y, nutation axis leaning from X. */
-static int tcp_forward(const double *joints, double *world)
-{
-    return trsrn_tcp_forward(ROT_Y, ROT_X, joints, world);
-}
-
-/* TCP inverse. */
-static int tcp_inverse(const double *world, double *joints)
-{
-    return trsrn_tcp_inverse(ROT_Y, ROT_X, world, joints);
-}
+/* Table about Y, nutation axis leaning from X. */
+const trsrn_variant_t trsrn_variant = {ROT_Y, ROT_X};
 
 const tcpswitch_def_t tcpswitch_def = {
-    "xyzbca_trsrn", "xyzbca-trsrn", "XYZBCA", trsrn_setup, tcp_forward, tcp_inverse
+    "xyzbca_trsrn", "xyzbca-trsrn", "XYZBCA", trsrn_setup, trsrn_tcp_forward, trsrn_tcp_inverse
 };

@@ -1,13 +1,9 @@
 /* pentakins.c: pentapod kinematics; base/ring geometry and Newton-solver pins. */
 #include "rtapi.h"
-#include "rtapi_app.h"
 #include "hal.h"
-#include "emc/kinematics/kinematics.h"
+#include "emc/kinematics/kins_frame.h"
 #include "parallel_math.h"
-#include "kins_glue.h"
 
-MODULE_LICENSE("GPL");
-MODULE_AUTHOR("OpenEMC");
 MODULE_DESCRIPTION("Pentapod kinematics (five struts, X Y Z A B)");
 
 /* Geometry and solver pins in HAL memory. */
@@ -23,7 +19,6 @@ typedef struct {
 } penta_pins_t;
 
 static penta_pins_t *pins;
-static int comp_id;
 
 /* Current geometry and solver limits from the pins. */
 static void geometry(penta_geom_t *g)
@@ -40,13 +35,10 @@ static void geometry(penta_geom_t *g)
 }
 
 /* Strut lengths -> pose by Newton iteration from the given pose; records iteration counts. */
-int kinematicsForward(const double *joint, EmcPose *world,
-                      const KINEMATICS_FORWARD_FLAGS *fflags, KINEMATICS_INVERSE_FLAGS *iflags)
+static int penta_fwd(const double *joint, EmcPose *world)
 {
     penta_geom_t g;
     unsigned used = 0;
-    (void)fflags;
-    (void)iflags;
     geometry(&g);
     int rc = penta_forward(&g, joint, world, &used);
     *pins->last_iterations = used;
@@ -56,20 +48,15 @@ int kinematicsForward(const double *joint, EmcPose *world,
 }
 
 /* Pose -> strut lengths. */
-int kinematicsInverse(const EmcPose *world, double *joint,
-                      const KINEMATICS_INVERSE_FLAGS *iflags, KINEMATICS_FORWARD_FLAGS *fflags)
+static int penta_inv(const EmcPose *world, double *joint)
 {
     penta_geom_t g;
-    (void)iflags;
-    (void)fflags;
     geometry(&g);
     return penta_inverse(&g, world, joint);
 }
 
-KINS_GLUE_BOTH("pentakins");
-
 /* Create pentakins.base.N.x/y/z and effector.N.r/z for one strut, with defaults. */
-static int strut_pins(int k)
+static int strut_pins(int comp_id, int k)
 {
     static const char axis[3] = {'x', 'y', 'z'};
     for (int i = 0; i < 3; i++) {
@@ -87,7 +74,7 @@ static int strut_pins(int k)
 }
 
 /* Create the solver pins with their defaults. */
-static int solver_pins(void)
+static int solver_pins(int comp_id)
 {
     if (hal_pin_float_newf(HAL_IN, &pins->convergence, comp_id,
                            "pentakins.convergence-criterion") < 0
@@ -108,35 +95,18 @@ static int solver_pins(void)
 }
 
 /* Create every pin. */
-static int make_pins(void)
+static int make_pins(int comp_id)
 {
     pins = hal_malloc(sizeof(*pins));
     if (!pins)
         return -ENOMEM;
     for (int k = 0; k < PENTA_STRUTS; k++)
-        if (strut_pins(k) < 0)
+        if (strut_pins(comp_id, k) < 0)
             return -EINVAL;
-    return solver_pins();
+    return solver_pins(comp_id);
 }
 
-/* Register the component and its pins. */
-int rtapi_app_main(void)
-{
-    comp_id = hal_init("pentakins");
-    if (comp_id < 0)
-        return comp_id;
-    int rc = make_pins();
-    if (rc < 0) {
-        rtapi_print_msg(RTAPI_MSG_ERR, "pentakins: ERROR: cannot create pins\n");
-        hal_exit(comp_id);
-        return rc;
-    }
-    hal_ready(comp_id);
-    return 0;
-}
-
-/* Remove the component. */
-void rtapi_app_exit(void)
-{
-    hal_exit(comp_id);
-}
+const kins_frame_def_t kins_frame_def = {
+    .name = "pentakins", .type = KINEMATICS_BOTH, .setup = make_pins,
+    .setup_error = "cannot create pins", .forward = penta_fwd, .inverse = penta_inv,
+};

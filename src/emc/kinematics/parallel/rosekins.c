@@ -1,13 +1,9 @@
 /* rosekins.c: rose engine kinematics; pins report the rotary joint's turn count and angles. */
 #include "rtapi.h"
-#include "rtapi_app.h"
 #include "hal.h"
-#include "emc/kinematics/kinematics.h"
+#include "emc/kinematics/kins_frame.h"
 #include "parallel_math.h"
-#include "kins_glue.h"
 
-MODULE_LICENSE("GPL");
-MODULE_AUTHOR("OpenEMC");
 MODULE_DESCRIPTION("Rose engine kinematics (radius, Z, endless rotary)");
 
 /* Status pins in HAL memory. */
@@ -19,7 +15,6 @@ typedef struct {
 
 static rose_pins_t *pins;
 static rose_state_t state;
-static int comp_id;
 
 /* Copy the solver state to the pins. */
 static void publish(void)
@@ -30,31 +25,23 @@ static void publish(void)
 }
 
 /* Joints -> world; also resynchronises the turn counter. */
-int kinematicsForward(const double *joint, EmcPose *world,
-                      const KINEMATICS_FORWARD_FLAGS *fflags, KINEMATICS_INVERSE_FLAGS *iflags)
+static int rose_fwd(const double *joint, EmcPose *world)
 {
-    (void)fflags;
-    (void)iflags;
     rose_forward(&state, joint, world);
     publish();
     return 0;
 }
 
 /* World -> joints, the rotary joint continuing across +-180 degrees. */
-int kinematicsInverse(const EmcPose *world, double *joint,
-                      const KINEMATICS_INVERSE_FLAGS *iflags, KINEMATICS_FORWARD_FLAGS *fflags)
+static int rose_inv(const EmcPose *world, double *joint)
 {
-    (void)iflags;
-    (void)fflags;
     rose_inverse(&state, world, joint);
     publish();
     return 0;
 }
 
-KINS_GLUE_BOTH("rosekins");
-
 /* Create rosekins.revolutions, .theta_degrees, .bigtheta_degrees (float OUT). */
-static int make_pins(void)
+static int make_pins(int comp_id)
 {
     pins = hal_malloc(sizeof(*pins));
     if (!pins)
@@ -70,24 +57,7 @@ static int make_pins(void)
     return 0;
 }
 
-/* Register the component and its pins. */
-int rtapi_app_main(void)
-{
-    comp_id = hal_init("rosekins");
-    if (comp_id < 0)
-        return comp_id;
-    int rc = make_pins();
-    if (rc < 0) {
-        rtapi_print_msg(RTAPI_MSG_ERR, "rosekins: ERROR: cannot create pins\n");
-        hal_exit(comp_id);
-        return rc;
-    }
-    hal_ready(comp_id);
-    return 0;
-}
-
-/* Remove the component. */
-void rtapi_app_exit(void)
-{
-    hal_exit(comp_id);
-}
+const kins_frame_def_t kins_frame_def = {
+    .name = "rosekins", .type = KINEMATICS_BOTH, .setup = make_pins,
+    .setup_error = "cannot create pins", .forward = rose_fwd, .inverse = rose_inv,
+};

@@ -1,34 +1,27 @@
 /* tripodkins.c: tripod kinematics; pins Bx, Cx, Cy place the second and third base joints. */
 #include "rtapi.h"
-#include "rtapi_app.h"
 #include "hal.h"
-#include "emc/kinematics/kinematics.h"
+#include "emc/kinematics/kins_frame.h"
+#include "emc/kinematics/kins_pins.h"
 #include "parallel_math.h"
-#include "kins_glue.h"
 
-MODULE_LICENSE("GPL");
-MODULE_AUTHOR("OpenEMC");
 MODULE_DESCRIPTION("Tripod kinematics (three struts of variable length)");
 
-/* Geometry pins in HAL memory. */
-typedef struct {
-    hal_float_t *bx;
-    hal_float_t *cx;
-    hal_float_t *cy;
-} tripod_pins_t;
+/* tripodkins.Bx, .Cx, .Cy, all 1.0 at load. */
+static const kins_pin_def_t tripod_pin_defs[3] = {{"Bx", 1.0}, {"Cx", 1.0}, {"Cy", 1.0}};
 
-static tripod_pins_t *pins;
-static int comp_id;
+/* The geometry pins, in tripod_pin_defs order. */
+static hal_float_t **pins;
 
 /* Current geometry from the pins. */
 static tripod_geom_t geometry(void)
 {
-    tripod_geom_t g = {*pins->bx, *pins->cx, *pins->cy};
+    tripod_geom_t g = {*pins[0], *pins[1], *pins[2]};
     return g;
 }
 
 /* Strut lengths -> tool point; forward flag bit 0 picks the solution below the base. */
-int kinematicsForward(const double *joint, EmcPose *world,
+static int tripod_fwd(const double *joint, EmcPose *world,
                       const KINEMATICS_FORWARD_FLAGS *fflags, KINEMATICS_INVERSE_FLAGS *iflags)
 {
     tripod_geom_t g = geometry();
@@ -37,7 +30,7 @@ int kinematicsForward(const double *joint, EmcPose *world,
 }
 
 /* Tool point -> strut lengths. */
-int kinematicsInverse(const EmcPose *world, double *joint,
+static int tripod_inv(const EmcPose *world, double *joint,
                       const KINEMATICS_INVERSE_FLAGS *iflags, KINEMATICS_FORWARD_FLAGS *fflags)
 {
     tripod_geom_t g = geometry();
@@ -47,40 +40,13 @@ int kinematicsInverse(const EmcPose *world, double *joint,
     return tripod_inverse(&g, world, joint);
 }
 
-KINS_GLUE_BOTH("tripodkins");
-
 /* Create tripodkins.Bx, .Cx, .Cy (float IN), all 1.0. */
-static int make_pins(void)
+static int make_pins(int comp_id)
 {
-    pins = hal_malloc(sizeof(*pins));
-    if (!pins)
-        return -ENOMEM;
-    if (hal_pin_float_newf(HAL_IN, &pins->bx, comp_id, "tripodkins.Bx") < 0
-        || hal_pin_float_newf(HAL_IN, &pins->cx, comp_id, "tripodkins.Cx") < 0
-        || hal_pin_float_newf(HAL_IN, &pins->cy, comp_id, "tripodkins.Cy") < 0)
-        return -EINVAL;
-    *pins->bx = *pins->cx = *pins->cy = 1.0;
-    return 0;
+    return kins_float_pins(comp_id, "tripodkins", tripod_pin_defs, 3, &pins);
 }
 
-/* Register the component and its pins. */
-int rtapi_app_main(void)
-{
-    comp_id = hal_init("tripodkins");
-    if (comp_id < 0)
-        return comp_id;
-    int rc = make_pins();
-    if (rc < 0) {
-        rtapi_print_msg(RTAPI_MSG_ERR, "tripodkins: ERROR: cannot create pins\n");
-        hal_exit(comp_id);
-        return rc;
-    }
-    hal_ready(comp_id);
-    return 0;
-}
-
-/* Remove the component. */
-void rtapi_app_exit(void)
-{
-    hal_exit(comp_id);
-}
+const kins_frame_def_t kins_frame_def = {
+    .name = "tripodkins", .type = KINEMATICS_BOTH, .setup = make_pins,
+    .setup_error = "cannot create pins", .forward_flags = tripod_fwd, .inverse_flags = tripod_inv,
+};

@@ -4,13 +4,13 @@
 #include "hal.h"
 #include "emc/kinematics/switchkins.h"
 #include "scara_math.h"
-#include "serial_pins.h"
+#include "emc/kinematics/kins_pins.h"
 
 MODULE_DESCRIPTION("Switchable SCARA kinematics");
 
 enum { SCARA_D1, SCARA_D2, SCARA_D3, SCARA_D4, SCARA_D5, SCARA_D6, SCARA_PINS };
 
-static const serial_pin_def_t scara_pin_defs[SCARA_PINS] = {
+static const kins_pin_def_t scara_pin_defs[SCARA_PINS] = {
     {"D1", 490.0}, {"D2", 340.0}, {"D3", 50.0}, {"D4", 250.0}, {"D5", 50.0}, {"D6", 50.0},
 };
 
@@ -47,10 +47,7 @@ static int scara_inv(const EmcPose *pos, double *joints)
 static int scara_setup(int comp_id, const char *sparm)
 {
     (void)sparm;
-    scara_pins = hal_malloc(SCARA_PINS * sizeof(*scara_pins));
-    if (!scara_pins)
-        return -ENOMEM;
-    return serial_float_pins(comp_id, "scarakins", scara_pin_defs, SCARA_PINS, scara_pins);
+    return kins_float_pins(comp_id, "scarakins", scara_pin_defs, SCARA_PINS, &scara_pins);
 }
 
 const switchkins_def_t switchkins_def = {
