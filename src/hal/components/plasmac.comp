@@ -79,13 +79,44 @@ pin in bit use_auto_volts "Take the target voltage from the arc at the end of th
 pin in float x_offset "X offset of the consumable change position (machine units)";
 pin in float xy_feed_rate "Feed rate of consumable change moves (machine units per minute)";
 pin in float y_offset "Y offset of the consumable change position (machine units)";
+pin in float arc_lost_delay "Seconds a lost arc is tolerated while cutting before the program is paused";
+pin in bit cut_recovery "While paused: TRUE moves X/Y to x-offset, y-offset and keeps them there for the restarted cut";
+pin in s32 cut_type "0: normal cut; 1: pierce only (the torch goes off after the pierce delay)";
+pin in bit debug_print "Accepted for HAL file compatibility; this component never prints from the realtime cycle";
+pin in bit external_estop "External emergency stop: torch and scribe off, program stop, offsets back to 0";
+pin in bit laser_recovery_start "While paused: TRUE moves X/Y by laser-x-offset, laser-y-offset; FALSE moves back";
+pin in float laser_x_offset "X distance of the alignment laser from the torch (machine units)";
+pin in float laser_y_offset "Y distance of the alignment laser from the torch (machine units)";
+pin in bit mesh_enable "Mesh mode: no arc OK needed or supervised and no height control";
+pin in bit multi_tool "Allow the scribe (scribe-start) and spotting (spotting-start) tools";
+pin in float offset_probe_delay "Seconds to wait at the probe offset position before probing";
+pin in float offset_probe_x "X offset moved before probing when the probe is not at the torch (machine units)";
+pin in float offset_probe_y "Y offset moved before probing when the probe is not at the torch (machine units)";
+pin in bit offset_set_probe "While idle, a rising edge probes without the probe offset and holds at pierce height until FALSE";
+pin in bit offset_set_scribe "While idle, TRUE arms and then fires the scribe (to mark the material) until FALSE";
+pin in bit offsets_active "External offsets still applied by motion; returns to idle wait until FALSE";
+pin in s32 ohmic_max_attempts "Probes retried when the float switch trips without an ohmic contact; then the float switch is used";
+pin in bit ohmic_test "While idle, TRUE powers the ohmic contact circuit (ohmic-enable) for a test";
+pin in float scribe_arm_delay "Seconds between arming the scribe and switching it on";
+pin in float scribe_on_delay "Seconds after switching the scribe on before motion is released";
+pin in bit scribe_start "Scribe request (spindle 1 on) with multi-tool: a rising edge starts scribing, FALSE ends it";
+pin in bit spotting_start "Spotting request (spindle 2 on) with multi-tool: a rising edge probes and fires a spot";
+pin in float spotting_threshold "Arc voltage that starts the spotting timer; 0 starts it when the torch switches on";
+pin in float spotting_time "Milliseconds the torch stays on after the spotting threshold is reached";
+pin in float thc_sample_threshold "Auto volts samples count only while the voltage changes less than this per cycle; 0 = always";
+pin in bit torch_off "TRUE switches the torch off and ends the cut; no cut or torch pulse starts while TRUE";
+pin in bit voidlock_enable "Hold torch height control while the arc voltage rises steeply (voids, kerf crossings)";
+pin in s32 voidlock_off_cycles = 10 "Cycles within thc-threshold of the target that release the void lock";
+pin in s32 voidlock_on_cycles = 2 "Consecutive cycles above voidlock-slope that set the void lock";
+pin in float voidlock_slope = 500.0 "Arc voltage rise in volts per second that counts toward the void lock";
+pin in float zero_window "arc-voltage-out reads 0 while the arc voltage is within this many volts of 0";
 pin out float adaptive_feed = 1.0 "Adaptive feed factor for motion (feed reduction)";
 pin out bit arc_ok_out "Arc OK as judged from the source selected by mode";
 pin out float arc_voltage_out "Arc voltage in volts";
 pin out bit cornerlock_is_locked "Height control held by the corner lock";
 pin out float cut_length "Total length cut with a valid arc (machine units)";
 pin out float cut_time "Total time cut with a valid arc (seconds)";
-pin out s32 error_out "Last fault: 0 none, 1 breakaway, 2 float switch, 3 probe reached the Z minimum limit, 4 no arc after arc-max-starts starts, 5 arc lost while cutting, 6 out of limits, 7 float switch active before probing";
+pin out s32 error_out "Last fault: 0 none, 1 breakaway, 2 float switch, 3 probe reached the Z minimum limit, 4 no arc after arc-max-starts starts, 5 arc lost while cutting, 6 out of limits, 7 float switch active before probing, 8 external estop";
 pin out bit feed_hold "TRUE holds motion until the torch is at cut height";
 pin out bit kerfcross_is_locked "Height control held by the kerf crossing detection";
 pin out bit led_down "Height control is moving the torch down";
@@ -108,6 +139,13 @@ pin out s32 y_offset_counts "Y external offset in counts of offset-scale";
 pin out float z_height "Torch height above the material once it has been found (machine units)";
 pin out s32 z_offset_counts "Z external offset in counts of offset-scale";
 pin out bit z_offset_enable "Enable for the Z external offset";
+pin out s32 laser_recovery_state "0 none, 1 moving to the laser position, 2 at the laser position, 3 moving back";
+pin out bit scribe_arm "Arm (lower) the scribe";
+pin out bit scribe_on "Switch the scribe on";
+pin out bit voidlock_is_locked "Height control held by the void lock";
+pin out float x_offset_current "X external offset now applied (machine units)";
+pin out float y_offset_current "Y external offset now applied (machine units)";
+pin out float z_offset_current "Z external offset now applied (machine units)";
 variable int state;
 variable double zoff;
 variable double xoff;
@@ -136,6 +174,18 @@ variable int last_probe_test;
 variable int last_pulse;
 variable int probe_testing;
 variable int seen_paused;
+variable int tool;
+variable int ohmic_tries;
+variable double lost_timer;
+variable int spot_armed;
+variable double probe_x0;
+variable double probe_y0;
+variable int probe_offset_used;
+variable int void_on;
+variable int void_off;
+variable int last_scribe;
+variable int last_spot;
+variable int last_set_probe;
 function _;
 description """A torch height and cut sequence controller for plasma tables, in the
 style of QtPlasmaC. All Z motion is made through external offsets: the component
@@ -169,6 +219,16 @@ and the torch is enabled. The states (state-out) are:
  19 CONSUMABLE_CHANGE_ON   X/Y moving to x-offset, y-offset
  20 CONSUMABLE_CHANGE_OFF  X/Y moving back
  21 PAUSED_MOTION  running at paused-motion-speed, torch off
+ 22 SCRIBE_ARM     scribe armed for scribe-arm-delay
+ 23 SCRIBE_ON      scribe on, waiting scribe-on-delay
+ 24 SCRIBING       motion runs with the scribe on
+ 25 SPOTTING       torch on for a spot
+ 26 OHMIC_RETRY    float switch without ohmic contact: up until it opens, probe again
+ 27 OFFSET_PROBE   X/Y moving to the probe offset, then waiting offset-probe-delay
+ 28 OFFSET_RETURN  X/Y moving back from the probe offset
+ 29 RECOVER_RETURN cutting from a cut recovery offset back onto the path
+ 30 CUT_RECOVERY   paused, X/Y following x-offset, y-offset
+ 31 LASER_RECOVERY paused, X/Y at the laser offsets and back
 
 The surface is the Z where the float switch opened plus
 float-switch-travel, or the Z of the ohmic contact plus ohmic-probe-offset.
@@ -186,6 +246,31 @@ While paused, consumable-change moves X/Y to the change offset and back, and a
 non-zero paused-motion-speed requests a resume with adaptive-feed set to that
 speed and the torch off; setting it back to 0 requests a pause again.
 
+With multi-tool TRUE, a rising scribe-start arms the scribe (scribe-arm), switches it
+on (scribe-on) after scribe-arm-delay and releases motion after scribe-on-delay; it
+ends when scribe-start falls. offset-set-scribe does the same while the program is
+idle. A rising spotting-start probes like a cut, moves to pierce height and
+switches the torch on; once the arc voltage reaches spotting-threshold the torch
+stays on for spotting-time milliseconds. cut-type 1 pierces only: the torch goes
+off after the pierce delay. torch-off TRUE ends a cut with the torch off (no pause)
+and blocks cuts, spots and torch pulses. mesh-enable cuts without arc OK and without
+height control. external-estop switches torch and scribe off, requests a program
+stop (error 8), returns all offsets to 0 and blocks every start while TRUE.
+
+When offset-probe-x or offset-probe-y is not 0, X/Y move by them at xy-feed-rate
+before probing, wait offset-probe-delay and move back after the surface is found;
+offset-set-probe runs a probe test without that move. With ohmic-probe-enable, a
+float switch trip without ohmic contact rises until the switch opens and probes
+again, at most ohmic-max-attempts times, then the float switch is used. ohmic-test
+powers ohmic-enable while idle. While paused, cut-recovery moves X/Y to x-offset,
+y-offset and keeps them there: the resumed cut starts at that point and moves back
+to the path at cut-feed-rate before motion is released; laser-recovery-start moves
+X/Y to laser-x-offset, laser-y-offset and back (laser-recovery-state). Returns to
+IDLE or PAUSED after MAX_HEIGHT or a consumable change wait until offsets-active
+is FALSE. x/y/z-offset-current show the offsets applied. A lost arc pauses only
+after arc-lost-delay seconds. debug-print is accepted and has no effect.
+arc-voltage-out reads 0 within zero-window volts of 0.
+
 Height control (CUT_MODE_01) starts thc-delay seconds after cut height is reached,
 when thc-enable is TRUE and thc-disable FALSE. The target is cut-volts, or with
 use-auto-volts the mean of thc-sample-counts cycles of arc voltage taken after
@@ -195,8 +280,11 @@ output in percent (clamped to 100): up when the voltage is low, down when it is
 high. It holds while motion-type is not a feed or arc move, while the corner lock
 (velocity below cornerlock-threshold percent of cut-feed-rate times feed-override)
 or the kerf crossing lock (voltage rising faster than kerfcross-override percent of
-1000 V/s, released when the voltage is back within thc-threshold of the target) is
-on. Without height control the torch stays at cut-height plus height-override times
+1000 V/s, released when the voltage is back within thc-threshold of the target) or
+the void lock (voidlock-on-cycles cycles rising faster than voidlock-slope volts per
+second, released after voidlock-off-cycles cycles within thc-threshold of the target)
+is on. Auto volts samples count only while the voltage changes by at most
+thc-sample-threshold per cycle (when it is above 0). Without height control the torch stays at cut-height plus height-override times
 height-per-volt. The correction stays within max-offset of cut height and the Z limits.""";
 option singleton yes;
 include <rtapi_math.h>;
@@ -206,12 +294,15 @@ author "OpenEMC";
 #include "hal/components/plasmac_motion.h"
 #include "hal/components/plasmac_thc.h"
 #include "hal/components/plasmac_states.h"
+#include "hal/components/plasmac_tools.h"
+#include "hal/components/plasmac_recovery.h"
+#include "hal/components/plasmac_faults.h"
 
 /* One cycle: sense the arc, let faults override the state, run its handler, write outputs. */
 FUNCTION(_)
 {
     plasmac_sense(__comp_inst);
-    if (!plasmac_faults(__comp_inst))
+    if (!plasmac_faults(__comp_inst, fperiod))
         plasmac_handlers[state](__comp_inst, fperiod);
     plasmac_outputs(__comp_inst);
 }

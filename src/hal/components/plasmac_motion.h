@@ -6,7 +6,8 @@ enum plasmac_state {
     PM_TORCH_ON, PM_ARC_OK, PM_PIERCE_DELAY, PM_PUDDLE_JUMP, PM_CUT_HEIGHT, PM_CUT_MODE_01,
     PM_CUT_MODE_2, PM_END_CUT, PM_SAFE_HEIGHT, PM_MAX_HEIGHT, PM_TORCH_PULSE, PM_PAUSED,
     PM_PROBE_TEST, PM_CONSUMABLE_CHANGE_ON, PM_CONSUMABLE_CHANGE_OFF, PM_PAUSED_MOTION,
-    PM_STATE_COUNT
+    PM_SCRIBE_ARM, PM_SCRIBE_ON, PM_SCRIBING, PM_SPOTTING, PM_OHMIC_RETRY, PM_OFFSET_PROBE,
+    PM_OFFSET_RETURN, PM_RECOVER_RETURN, PM_CUT_RECOVERY, PM_LASER_RECOVERY, PM_STATE_COUNT
 };
 
 /* Values of stop-type-out. */
@@ -15,8 +16,14 @@ enum plasmac_stop { PM_STOP_NONE, PM_STOP_STOP, PM_STOP_PAUSE };
 /* Values of error-out. */
 enum plasmac_error {
     PM_ERR_NONE, PM_ERR_BREAKAWAY, PM_ERR_FLOAT_SWITCH, PM_ERR_PROBE_LIMIT, PM_ERR_NO_ARC,
-    PM_ERR_ARC_LOST, PM_ERR_OUT_OF_LIMITS, PM_ERR_FLOAT_BEFORE_PROBE
+    PM_ERR_ARC_LOST, PM_ERR_OUT_OF_LIMITS, PM_ERR_FLOAT_BEFORE_PROBE, PM_ERR_EXTERNAL_ESTOP
 };
+
+/* The tool a sequence runs for: the torch (cut), the scribe or a spot. */
+enum plasmac_tool { PM_TOOL_TORCH, PM_TOOL_SCRIBE, PM_TOOL_SPOT };
+
+/* Values of laser-recovery-state. */
+enum plasmac_laser { PM_LASER_NONE, PM_LASER_MOVING, PM_LASER_THERE, PM_LASER_BACK };
 
 /* Tolerance for height comparisons (machine units). */
 #define PM_EPSILON 1e-9
@@ -102,7 +109,7 @@ static double plasmac_above_zero(struct __comp_state *__comp_inst, double height
 /* TRUE when no valid arc is required (marking or operator override). */
 static int plasmac_ignore_arc(struct __comp_state *__comp_inst)
 {
-    return ignore_arc_ok_0 || ignore_arc_ok_1;
+    return ignore_arc_ok_0 || ignore_arc_ok_1 || mesh_enable;
 }
 
 /* Arc voltage in volts and arc OK from the source the mode selects. */
@@ -117,10 +124,38 @@ static void plasmac_sense(struct __comp_state *__comp_inst)
     arc_ok_now = arc_ok_now && torch_on;
 }
 
-/* TRUE for states where motion must wait for the torch to reach cut height. */
+/* TRUE for states where motion must wait for the torch (or scribe) to be ready. */
 static int plasmac_holds_motion(int s)
 {
-    return s >= PM_PROBE_HEIGHT && s <= PM_CUT_HEIGHT;
+    return (s >= PM_PROBE_HEIGHT && s <= PM_CUT_HEIGHT) || s == PM_SCRIBE_ARM ||
+           s == PM_SCRIBE_ON || s == PM_SPOTTING || s == PM_OHMIC_RETRY ||
+           s == PM_OFFSET_PROBE || s == PM_OFFSET_RETURN || s == PM_RECOVER_RETURN;
+}
+
+/* Arc voltage as shown: 0 inside zero-window. */
+static double plasmac_shown_volts(struct __comp_state *__comp_inst)
+{
+    return fabs(volts) <= zero_window ? 0.0 : volts;
+}
+
+/* TRUE when the ohmic contact circuit must be powered. */
+static int plasmac_ohmic_power(struct __comp_state *__comp_inst)
+{
+    if (state == PM_IDLE && ohmic_test)
+        return 1;
+    return ohmic_probe_enable && (state == PM_PROBE_DOWN || state == PM_PROBE_HEIGHT ||
+                                  state == PM_OHMIC_RETRY);
+}
+
+/* Remember the request inputs of this cycle for edge detection next cycle. */
+static void plasmac_latch_inputs(struct __comp_state *__comp_inst)
+{
+    last_start = cutting_start;
+    last_probe_test = probe_test;
+    last_pulse = torch_pulse_start;
+    last_scribe = scribe_start;
+    last_spot = spotting_start;
+    last_set_probe = offset_set_probe;
 }
 
 /* Write the offset counts, enables and status outputs for this cycle. */
@@ -134,10 +169,13 @@ static void plasmac_outputs(struct __comp_state *__comp_inst)
     z_offset_enable = machine_is_on;
     xy_offset_enable = machine_is_on;
     feed_hold = plasmac_holds_motion(state);
-    arc_voltage_out = volts;
+    x_offset_current = xoff;
+    y_offset_current = yoff;
+    z_offset_current = zoff;
+    arc_voltage_out = plasmac_shown_volts(__comp_inst);
     arc_ok_out = arc_ok_now;
-    thc_enabled = thc_enable && !thc_disable;
-    ohmic_enable = ohmic_probe_enable && (state == PM_PROBE_DOWN || state == PM_PROBE_HEIGHT);
+    thc_enabled = thc_enable && !thc_disable && !mesh_enable;
+    ohmic_enable = plasmac_ohmic_power(__comp_inst);
     z_height = have_zero ? plasmac_z(__comp_inst) - zzero : 0.0;
     state_out = state;
     if (program_pause && (program_is_paused || program_is_idle))
@@ -146,7 +184,5 @@ static void plasmac_outputs(struct __comp_state *__comp_inst)
         program_stop = 0;
     if (program_resume && program_is_running && !program_is_paused)
         program_resume = 0;
-    last_start = cutting_start;
-    last_probe_test = probe_test;
-    last_pulse = torch_pulse_start;
+    plasmac_latch_inputs(__comp_inst);
 }

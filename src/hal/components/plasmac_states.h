@@ -7,8 +7,32 @@ typedef void (*plasmac_handler_t)(struct __comp_state *__comp_inst, double dt);
 static void plasmac_leave_cut(struct __comp_state *__comp_inst)
 {
     torch_on = 0;
+    scribe_arm = 0;
+    scribe_on = 0;
     adaptive_feed = 1.0;
     plasmac_thc_reset(__comp_inst);
+}
+
+/* The start request of the running tool: cutting-start, scribe-start or spotting-start. */
+static int plasmac_request(struct __comp_state *__comp_inst)
+{
+    if (tool == PM_TOOL_SCRIBE)
+        return scribe_start || offset_set_scribe;
+    if (tool == PM_TOOL_SPOT)
+        return spotting_start;
+    return cutting_start;
+}
+
+/* TRUE while a probe test (probe-test or offset-set-probe) is requested. */
+static int plasmac_probe_test_request(struct __comp_state *__comp_inst)
+{
+    return probe_test || offset_set_probe;
+}
+
+/* TRUE when the torch may be lit for a cut, spot or pulse. */
+static int plasmac_torch_allowed(struct __comp_state *__comp_inst)
+{
+    return torch_enable && !torch_off && !external_estop;
 }
 
 /* Switch the torch off and leave the cut through MAX_HEIGHT with a pause or stop request. */
@@ -39,10 +63,14 @@ static void plasmac_probe_failed(struct __comp_state *__comp_inst)
     plasmac_abort(__comp_inst, PM_ERR_PROBE_LIMIT, PM_STOP_STOP);
 }
 
-/* Begin probing, unless the float switch is already closed. */
-static void plasmac_begin_probe(struct __comp_state *__comp_inst)
+/* Begin probing, unless the float switch is already closed; move to the probe offset first. */
+static void plasmac_begin_probe(struct __comp_state *__comp_inst, int use_offset)
 {
     have_zero = 0;
+    ohmic_tries = 0;
+    probe_x0 = xoff;
+    probe_y0 = yoff;
+    probe_offset_used = use_offset && (offset_probe_x != 0.0 || offset_probe_y != 0.0);
     if (float_switch) {
         if (probe_testing)
             plasmac_probe_failed(__comp_inst);
@@ -50,7 +78,7 @@ static void plasmac_begin_probe(struct __comp_state *__comp_inst)
             plasmac_abort(__comp_inst, PM_ERR_FLOAT_BEFORE_PROBE, PM_STOP_PAUSE);
         return;
     }
-    plasmac_goto(__comp_inst, PM_PROBE_HEIGHT);
+    plasmac_goto(__comp_inst, probe_offset_used ? PM_OFFSET_PROBE : PM_PROBE_HEIGHT);
 }
 
 /* Start (or restart after a pause) a cut: probe unless close enough to the last cut. */
@@ -60,36 +88,69 @@ static void plasmac_start_cut(struct __comp_state *__comp_inst)
     error_out = PM_ERR_NONE;
     stop_type_out = PM_STOP_NONE;
     starts = 0;
+    lost_timer = 0.0;
     plasmac_thc_reset(__comp_inst);
     if (zoff == 0.0)
         zbase = axis_z_position;
     if (have_zero && skip_ihs_distance > 0.0 && dist < skip_ihs_distance)
         plasmac_goto(__comp_inst, PM_PIERCE_HEIGHT);
     else
-        plasmac_begin_probe(__comp_inst);
+        plasmac_begin_probe(__comp_inst, 1);
 }
 
-/* IDLE: start a cut, a probe test or a torch pulse; raise the torch when the program ends. */
+/* Start a probe test (held at pierce height); offset-set-probe skips the probe offset. */
+static void plasmac_start_probe_test(struct __comp_state *__comp_inst, int use_offset)
+{
+    probe_testing = 1;
+    probe_test_error = 0;
+    tool = PM_TOOL_TORCH;
+    if (zoff == 0.0)
+        zbase = axis_z_position;
+    plasmac_begin_probe(__comp_inst, use_offset);
+}
+
+/* Start the sequence of a tool on its rising start edge; 1 when one started. */
+static int plasmac_idle_tool_start(struct __comp_state *__comp_inst)
+{
+    if (cutting_start && !last_start) {
+        tool = PM_TOOL_TORCH;
+        if (out_of_limits)
+            plasmac_abort(__comp_inst, PM_ERR_OUT_OF_LIMITS, PM_STOP_STOP);
+        else if (plasmac_torch_allowed(__comp_inst))
+            plasmac_start_cut(__comp_inst);
+        return 1;
+    }
+    if (multi_tool && spotting_start && !last_spot && plasmac_torch_allowed(__comp_inst)) {
+        tool = PM_TOOL_SPOT;
+        plasmac_start_cut(__comp_inst);
+        return 1;
+    }
+    if ((multi_tool && scribe_start && !last_scribe) || (offset_set_scribe && program_is_idle)) {
+        tool = PM_TOOL_SCRIBE;
+        scribe_arm = 1;
+        plasmac_goto(__comp_inst, PM_SCRIBE_ARM);
+        return 1;
+    }
+    return 0;
+}
+
+/* IDLE: start a tool, a probe test or a torch pulse; remove the offsets when the program ends. */
 static void plasmac_idle(struct __comp_state *__comp_inst, double dt)
 {
     (void)dt;
     torch_on = 0;
     adaptive_feed = 1.0;
-    if (cutting_start && !last_start) {
-        if (out_of_limits)
-            plasmac_abort(__comp_inst, PM_ERR_OUT_OF_LIMITS, PM_STOP_STOP);
-        else if (torch_enable)
-            plasmac_start_cut(__comp_inst);
-    } else if (probe_test && !last_probe_test && program_is_idle) {
-        probe_testing = 1;
-        probe_test_error = 0;
-        if (zoff == 0.0)
-            zbase = axis_z_position;
-        plasmac_begin_probe(__comp_inst);
-    } else if (torch_pulse_start && !last_pulse && torch_enable && program_is_idle) {
+    if (plasmac_idle_tool_start(__comp_inst))
+        return;
+    if (probe_test && !last_probe_test && program_is_idle) {
+        plasmac_start_probe_test(__comp_inst, 1);
+    } else if (offset_set_probe && !last_set_probe && program_is_idle) {
+        plasmac_start_probe_test(__comp_inst, 0);
+    } else if (torch_pulse_start && !last_pulse && plasmac_torch_allowed(__comp_inst) &&
+               program_is_idle) {
         torch_on = 1;
         plasmac_goto(__comp_inst, PM_TORCH_PULSE);
-    } else if (zoff != 0.0 && program_is_idle && !cutting_start) {
+    } else if ((zoff != 0.0 || xoff != 0.0 || yoff != 0.0) && program_is_idle && !cutting_start) {
         plasmac_goto(__comp_inst, PM_MAX_HEIGHT);
     }
 }
@@ -105,6 +166,11 @@ static void plasmac_touched(struct __comp_state *__comp_inst)
 {
     zcontact = plasmac_z(__comp_inst);
     contact_float = float_switch;
+    if (contact_float && ohmic_probe_enable && !ohmic_probe && ohmic_tries < ohmic_max_attempts) {
+        ohmic_tries++;
+        plasmac_goto(__comp_inst, PM_OHMIC_RETRY);
+        return;
+    }
     plasmac_goto(__comp_inst, contact_float ? PM_PROBE_UP : PM_ZERO_HEIGHT);
 }
 
@@ -150,7 +216,10 @@ static void plasmac_zero_height(struct __comp_state *__comp_inst, double dt)
     (void)dt;
     zzero = zcontact + (contact_float ? float_switch_travel : ohmic_probe_offset);
     have_zero = 1;
-    plasmac_goto(__comp_inst, probe_testing ? PM_PROBE_TEST : PM_PIERCE_HEIGHT);
+    if (probe_offset_used)
+        plasmac_goto(__comp_inst, PM_OFFSET_RETURN);
+    else
+        plasmac_goto(__comp_inst, probe_testing ? PM_PROBE_TEST : PM_PIERCE_HEIGHT);
 }
 
 /* PIERCE_HEIGHT: move to pierce height. */
@@ -158,7 +227,7 @@ static void plasmac_pierce_height(struct __comp_state *__comp_inst, double dt)
 {
     if (plasmac_move_z(__comp_inst, plasmac_above_zero(__comp_inst, pierce_height),
                        setup_feed_rate, dt))
-        plasmac_goto(__comp_inst, PM_TORCH_ON);
+        plasmac_goto(__comp_inst, tool == PM_TOOL_SPOT ? PM_SPOTTING : PM_TORCH_ON);
 }
 
 /* TORCH_ON: switch the torch on, after the restart delay when this is a restart. */
@@ -192,7 +261,10 @@ static void plasmac_arc_ok(struct __comp_state *__comp_inst, double dt)
 static void plasmac_pierce_delay(struct __comp_state *__comp_inst, double dt)
 {
     timer += dt;
-    if (timer >= pierce_delay)
+    if (timer >= pierce_delay && cut_type == 1) {
+        plasmac_leave_cut(__comp_inst);
+        plasmac_goto(__comp_inst, PM_END_CUT);
+    } else if (timer >= pierce_delay)
         plasmac_goto(__comp_inst, puddle_jump_height > 0.0 ? PM_PUDDLE_JUMP : PM_CUT_HEIGHT);
 }
 
@@ -216,7 +288,10 @@ static void plasmac_cut_height(struct __comp_state *__comp_inst, double dt)
     plasmac_thc_reset(__comp_inst);
     prev_x = axis_x_position;
     prev_y = axis_y_position;
-    plasmac_goto(__comp_inst, mode == 2 ? PM_CUT_MODE_2 : PM_CUT_MODE_01);
+    if (xoff != 0.0 || yoff != 0.0)
+        plasmac_goto(__comp_inst, PM_RECOVER_RETURN);
+    else
+        plasmac_goto(__comp_inst, mode == 2 ? PM_CUT_MODE_2 : PM_CUT_MODE_01);
 }
 
 /* CUT_MODE_01: cut with arc voltage height control. */
@@ -248,12 +323,16 @@ static void plasmac_safe_height(struct __comp_state *__comp_inst, double dt)
         plasmac_goto(__comp_inst, PM_IDLE);
 }
 
-/* MAX_HEIGHT: move the offset back to 0, then idle or wait in the pause. */
+/* MAX_HEIGHT: move the offsets back to 0, then idle or wait in the pause. */
 static void plasmac_max_height(struct __comp_state *__comp_inst, double dt)
 {
-    if (!plasmac_move_z(__comp_inst, zbase, setup_feed_rate, dt))
+    int z_done = plasmac_move_z(__comp_inst, zbase, setup_feed_rate, dt);
+    int xy_done = plasmac_move_xy(__comp_inst, 0.0, 0.0, xy_feed_rate, dt);
+    if (!z_done || !xy_done)
         return;
     zoff = 0.0;
+    if (offsets_active)
+        return;
     probe_testing = 0;
     plasmac_goto(__comp_inst, stop_type_out == PM_STOP_PAUSE ? PM_PAUSED : PM_IDLE);
 }
@@ -289,6 +368,10 @@ static void plasmac_paused(struct __comp_state *__comp_inst, double dt)
         return;
     if (program_is_paused && consumable_change) {
         plasmac_goto(__comp_inst, PM_CONSUMABLE_CHANGE_ON);
+    } else if (program_is_paused && cut_recovery) {
+        plasmac_goto(__comp_inst, PM_CUT_RECOVERY);
+    } else if (program_is_paused && laser_recovery_start) {
+        plasmac_goto(__comp_inst, PM_LASER_RECOVERY);
     } else if (program_is_paused && paused_motion_speed != 0.0) {
         program_resume = 1;
         adaptive_feed = plasmac_paused_speed(__comp_inst);
@@ -298,7 +381,8 @@ static void plasmac_paused(struct __comp_state *__comp_inst, double dt)
         plasmac_goto(__comp_inst, PM_IDLE);
     } else if (program_is_running && !program_is_paused) {
         stop_type_out = PM_STOP_NONE;
-        if (cutting_start && torch_enable)
+        if (tool != PM_TOOL_SCRIBE && plasmac_request(__comp_inst) &&
+            plasmac_torch_allowed(__comp_inst))
             plasmac_start_cut(__comp_inst);
         else
             plasmac_goto(__comp_inst, PM_IDLE);
@@ -317,7 +401,7 @@ static void plasmac_change_on(struct __comp_state *__comp_inst, double dt)
 /* CONSUMABLE_CHANGE_OFF: move X/Y back, then wait in the pause again. */
 static void plasmac_change_off(struct __comp_state *__comp_inst, double dt)
 {
-    if (plasmac_move_xy(__comp_inst, 0.0, 0.0, xy_feed_rate, dt))
+    if (plasmac_move_xy(__comp_inst, 0.0, 0.0, xy_feed_rate, dt) && !offsets_active)
         plasmac_goto(__comp_inst, PM_PAUSED);
 }
 
@@ -326,7 +410,7 @@ static void plasmac_probe_test(struct __comp_state *__comp_inst, double dt)
 {
     plasmac_move_z(__comp_inst, plasmac_above_zero(__comp_inst, pierce_height),
                    setup_feed_rate, dt);
-    if (!probe_test)
+    if (!plasmac_probe_test_request(__comp_inst))
         plasmac_goto(__comp_inst, PM_MAX_HEIGHT);
 }
 
@@ -347,85 +431,4 @@ static void plasmac_paused_motion(struct __comp_state *__comp_inst, double dt)
         adaptive_feed = 1.0;
         plasmac_goto(__comp_inst, PM_PAUSED);
     }
-}
-
-/* The handler of each state, indexed by state number. */
-static const plasmac_handler_t plasmac_handlers[PM_STATE_COUNT] = {
-    [PM_IDLE] = plasmac_idle,
-    [PM_PROBE_HEIGHT] = plasmac_probe_height,
-    [PM_PROBE_DOWN] = plasmac_probe_down,
-    [PM_PROBE_UP] = plasmac_probe_up,
-    [PM_ZERO_HEIGHT] = plasmac_zero_height,
-    [PM_PIERCE_HEIGHT] = plasmac_pierce_height,
-    [PM_TORCH_ON] = plasmac_torch_on,
-    [PM_ARC_OK] = plasmac_arc_ok,
-    [PM_PIERCE_DELAY] = plasmac_pierce_delay,
-    [PM_PUDDLE_JUMP] = plasmac_puddle_jump,
-    [PM_CUT_HEIGHT] = plasmac_cut_height,
-    [PM_CUT_MODE_01] = plasmac_cut_mode_01,
-    [PM_CUT_MODE_2] = plasmac_cut_mode_2,
-    [PM_END_CUT] = plasmac_end_cut,
-    [PM_SAFE_HEIGHT] = plasmac_safe_height,
-    [PM_MAX_HEIGHT] = plasmac_max_height,
-    [PM_TORCH_PULSE] = plasmac_torch_pulse,
-    [PM_PAUSED] = plasmac_paused,
-    [PM_PROBE_TEST] = plasmac_probe_test,
-    [PM_CONSUMABLE_CHANGE_ON] = plasmac_change_on,
-    [PM_CONSUMABLE_CHANGE_OFF] = plasmac_change_off,
-    [PM_PAUSED_MOTION] = plasmac_paused_motion,
-};
-
-/* TRUE in the states of a cut, from probing to cutting. */
-static int plasmac_in_cut(struct __comp_state *__comp_inst)
-{
-    return state >= PM_PROBE_HEIGHT && state <= PM_CUT_MODE_2 && !probe_testing;
-}
-
-/* Machine off: torch off, offsets cleared at once, back to IDLE. */
-static void plasmac_machine_off(struct __comp_state *__comp_inst)
-{
-    plasmac_leave_cut(__comp_inst);
-    zoff = xoff = yoff = 0.0;
-    probe_testing = 0;
-    stop_type_out = PM_STOP_NONE;
-    plasmac_goto(__comp_inst, PM_IDLE);
-}
-
-/* TRUE while the torch is lit and must have a valid arc. */
-static int plasmac_arc_required(struct __comp_state *__comp_inst)
-{
-    return state >= PM_PIERCE_DELAY && state <= PM_CUT_MODE_2 &&
-           !plasmac_ignore_arc(__comp_inst);
-}
-
-/* Faults and operator actions that override the state handler; 1 when one acted. */
-static int plasmac_faults(struct __comp_state *__comp_inst)
-{
-    if (!machine_is_on) {
-        plasmac_machine_off(__comp_inst);
-        return 1;
-    }
-    if (probe_testing && state <= PM_ZERO_HEIGHT && breakaway) {
-        plasmac_probe_failed(__comp_inst);
-        return 1;
-    }
-    if (!plasmac_in_cut(__comp_inst))
-        return 0;
-    if (breakaway)
-        plasmac_abort(__comp_inst, PM_ERR_BREAKAWAY, PM_STOP_PAUSE);
-    else if (float_switch && state >= PM_PIERCE_HEIGHT)
-        plasmac_abort(__comp_inst, PM_ERR_FLOAT_SWITCH, PM_STOP_PAUSE);
-    else if (program_is_paused)
-        plasmac_abort(__comp_inst, PM_ERR_NONE, PM_STOP_PAUSE);
-    else if (program_is_idle)
-        plasmac_abort(__comp_inst, PM_ERR_NONE, PM_STOP_STOP);
-    else if (!cutting_start || cutting_stop) {
-        plasmac_leave_cut(__comp_inst);
-        plasmac_goto(__comp_inst, PM_END_CUT);
-    }
-    else if (plasmac_arc_required(__comp_inst) && !arc_ok_now)
-        plasmac_abort(__comp_inst, PM_ERR_ARC_LOST, PM_STOP_PAUSE);
-    else
-        return 0;
-    return 1;
 }

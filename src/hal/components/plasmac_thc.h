@@ -16,6 +16,9 @@ static void plasmac_thc_reset(struct __comp_state *__comp_inst)
     led_down = 0;
     cornerlock_is_locked = 0;
     kerfcross_is_locked = 0;
+    voidlock_is_locked = 0;
+    void_on = 0;
+    void_off = 0;
 }
 
 /* TRUE while the tool runs slower than the corner lock threshold. */
@@ -38,6 +41,29 @@ static int plasmac_kerfcross(struct __comp_state *__comp_inst, double target, do
     return kerfcross_is_locked;
 }
 
+/* Void lock: set after voidlock-on-cycles steep rises, released after voidlock-off-cycles near the target. */
+static int plasmac_voidlock(struct __comp_state *__comp_inst, double target, double dt)
+{
+    double rate = dt > 0.0 ? (volts - prev_volts) / dt : 0.0;
+    if (!voidlock_enable)
+        return 0;
+    void_on = rate > voidlock_slope ? void_on + 1 : 0;
+    if (void_on >= (voidlock_on_cycles > 0 ? voidlock_on_cycles : 1)) {
+        void_off = 0;
+        return 1;
+    }
+    if (!voidlock_is_locked)
+        return 0;
+    void_off = fabs(target - volts) <= thc_threshold ? void_off + 1 : 0;
+    return void_off < voidlock_off_cycles;
+}
+
+/* TRUE when this cycle's voltage is steady enough to be an auto volts sample. */
+static int plasmac_sample_steady(struct __comp_state *__comp_inst)
+{
+    return thc_sample_threshold <= 0.0 || fabs(volts - prev_volts) <= thc_sample_threshold;
+}
+
 /* Target arc voltage; returns 0 while auto volts is still sampling. */
 static int plasmac_target_volts(struct __comp_state *__comp_inst, double *target)
 {
@@ -47,6 +73,11 @@ static int plasmac_target_volts(struct __comp_state *__comp_inst, double *target
         return 1;
     }
     if (volts_n < samples) {
+        if (!plasmac_sample_steady(__comp_inst)) {
+            volts_sum = 0.0;
+            volts_n = 0;
+            return 0;
+        }
         volts_sum += volts;
         if (++volts_n < samples)
             return 0;
@@ -82,7 +113,8 @@ static double plasmac_voltage_velocity(struct __comp_state *__comp_inst, double 
     double target = 0.0;
     int known = plasmac_target_volts(__comp_inst, &target);
     kerfcross_is_locked = known && plasmac_kerfcross(__comp_inst, target, dt);
-    *active = *active && known && !kerfcross_is_locked;
+    voidlock_is_locked = known && plasmac_voidlock(__comp_inst, target, dt);
+    *active = *active && known && !kerfcross_is_locked && !voidlock_is_locked;
     return *active ? plasmac_pid_velocity(__comp_inst, target, dt) : 0.0;
 }
 
@@ -121,10 +153,11 @@ static void plasmac_cut(struct __comp_state *__comp_inst, double dt, int up_down
     plasmac_cut_stats(__comp_inst, dt);
     adaptive_feed = feed_reduction > 0.0 && feed_reduction < 100.0 ? feed_reduction / 100.0 : 1.0;
     led_up = led_down = 0;
-    if (!(thc_enable && !thc_disable)) {
+    if (!(thc_enable && !thc_disable && !mesh_enable)) {
         thc_active = 0;
         cornerlock_is_locked = 0;
         kerfcross_is_locked = 0;
+        voidlock_is_locked = 0;
         plasmac_move_z(__comp_inst, plasmac_above_zero(__comp_inst, cut_height) +
                        height_override * height_per_volt, thc_feed_rate, dt);
         return;
