@@ -13,6 +13,12 @@ static int32_t ticks(int64_t *acc_ns, int32_t base_ms, long period_ns)
     return n > 1000000 ? 1000000 : (int32_t)n;
 }
 
+/* value + n (n >= 0) but no more than limit, without overflowing. */
+static int32_t add_upto(int32_t value, int32_t n, int32_t limit)
+{
+    return (int64_t)limit - value <= n ? limit : value + n;
+}
+
 /* Classic timer: E low resets; while C is high it counts up to the preset. */
 void cl_timer_step(cl_timer_t *t, int enable, int control, long period_ns)
 {
@@ -24,7 +30,7 @@ void cl_timer_step(cl_timer_t *t, int enable, int control, long period_ns)
     t->running = control && !t->done;
     if (!t->running)
         return;
-    t->value += ticks(&t->acc_ns, t->base_ms, period_ns);
+    t->value = add_upto(t->value, ticks(&t->acc_ns, t->base_ms, period_ns), t->preset);
     if (t->value >= t->preset) {
         t->value = t->preset;
         t->done = 1;
@@ -61,13 +67,13 @@ void cl_counter_step(cl_counter_t *c, int reset, int preset, int up, int down)
         c->value = 0;
     else if (preset)
         c->value = c->preset;
-    if (up && !c->prev_up && ++c->value > CL_COUNTER_MAX) {
-        c->value = 0;
-        c->full = 1;
+    if (up && !c->prev_up) {  /* compare before counting: a written value may be INT32_MAX */
+        c->full = c->value >= CL_COUNTER_MAX;
+        c->value = c->full ? 0 : c->value + 1;
     }
-    if (down && !c->prev_down && --c->value < 0) {
-        c->value = CL_COUNTER_MAX;
-        c->empty = 1;
+    if (down && !c->prev_down) {
+        c->empty = c->value <= 0;
+        c->value = c->empty ? CL_COUNTER_MAX : c->value - 1;
     }
     c->prev_up = up;
     c->prev_down = down;
@@ -78,7 +84,7 @@ void cl_counter_step(cl_counter_t *c, int reset, int preset, int up, int down)
 static int iec_count(cl_timer_iec_t *t, long period_ns)
 {
     if (t->value < t->preset)
-        t->value += ticks(&t->acc_ns, t->base_ms, period_ns);
+        t->value = add_upto(t->value, ticks(&t->acc_ns, t->base_ms, period_ns), t->preset);
     if (t->value >= t->preset) {
         t->value = t->preset;
         return 1;

@@ -32,11 +32,14 @@ static int32_t binary(int op, int32_t a, int32_t b)
 /* Integer power a^b (b < 0 gives 0 unless |a| is 1), wrapping like the other operators. */
 static int32_t power(int32_t a, int32_t b)
 {
-    uint32_t r = 1;
+    uint32_t r = 1, base = (uint32_t)a;
     if (b < 0)
         return a == 1 ? 1 : a == -1 ? ((b & 1) ? -1 : 1) : 0;
-    for (int i = 0; i < b && i < 64; i++)
-        r *= (uint32_t)a;
+    for (uint32_t e = (uint32_t)b; e; e >>= 1) {  /* square and multiply: at most 31 rounds */
+        if (e & 1)
+            r *= base;
+        base *= base;
+    }
     return (int32_t)r;
 }
 

@@ -24,11 +24,17 @@ counter.capture-position serve all channels.""";
 static int num_chan = 1;
 RTAPI_MP_INT(num_chan, "number of channels");
 
+/* a - b on the wrapping 32-bit count circle (no signed overflow). */
+static int cnt_diff(int a, int b)
+{
+    return (int)((unsigned)a - (unsigned)b);
+}
+
 /* Fast part of one channel: count edges and handle the index. */
 static void cnt_count_one(struct __comp_state *__comp_inst)
 {
     int a = phase_A, z = phase_Z;
-    if (a && !old_a) raw++;
+    if (a && !old_a) raw = cnt_diff(raw, -1);  /* wraps like the 32-bit counter */
     old_a = a;
     if (z && !old_z && index_enable) {
         offset = raw;
@@ -45,9 +51,9 @@ static void cnt_capture_one(struct __comp_state *__comp_inst, long period)
     if (index_seen) { index_enable = 0; index_seen = 0; }
     if (reset) offset = raw;
     rawcounts = raw;
-    counts = raw - offset;
-    position = (raw - offset) / scale;
-    velocity = (raw - old_raw) / scale / (period * 1e-9);
+    counts = cnt_diff(raw, offset);
+    position = cnt_diff(raw, offset) / scale;
+    velocity = cnt_diff(raw, old_raw) / scale / (period * 1e-9);
     old_raw = raw;
 }
 

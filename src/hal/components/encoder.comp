@@ -47,6 +47,12 @@ RTAPI_MP_INT(num_chan, "number of channels");
 static char *names[ENC_MAX_CHAN];
 RTAPI_MP_ARRAY_STRING(names, ENC_MAX_CHAN, "names of the channels");
 
+/* a - b on the wrapping 32-bit count circle (no signed overflow). */
+static int enc_diff(int a, int b)
+{
+    return (int)((unsigned)a - (unsigned)b);
+}
+
 /* Count change for a quadrature transition from state a to b (AB as 2 bits). */
 static int enc_step(int a, int b, int x4)
 {
@@ -66,7 +72,7 @@ static int enc_step(int a, int b, int x4)
 static int enc_gap_index(struct __comp_state *__comp_inst, long long dt)
 {
     int teeth = missing_teeth;
-    int hit = teeth > 0 && gap_ns > 0 && dt * 2 > gap_ns * (2 * teeth + 1);
+    int hit = teeth > 0 && gap_ns > 0 && 2.0 * dt > (double)gap_ns * (2.0 * teeth + 1.0);
     gap_ns = dt;
     return hit;
 }
@@ -81,7 +87,7 @@ static void enc_count_one(struct __comp_state *__comp_inst, long period)
     state = s;
     if (d) {
         int idx = enc_gap_index(__comp_inst, clock_ns - edge_ns);
-        raw += d;
+        raw = enc_diff(raw, -d);  /* wraps like the 32-bit counter */
         prev_edge_ns = edge_ns;
         edge_ns = clock_ns;
         edge_dir = d;
@@ -107,21 +113,21 @@ static void enc_capture_one(struct __comp_state *__comp_inst, long period)
     if (scale > -1e-20 && scale < 1e-20) { scale = 1.0; position_scale = 1.0; }
     if (index_seen) { index_enable = 0; index_seen = 0; }
     if (reset) offset = raw;
-    c = raw - offset;
+    c = enc_diff(raw, offset);
     rawcounts = raw;
     counts = c;
     position = c / scale;
     if (latch_seen) {
-        counts_latched = latched - offset;
-        position_latched = (latched - offset) / scale;
+        counts_latched = enc_diff(latched, offset);
+        position_latched = counts_latched / scale;
         latch_seen = 0;
     }
     since = (clock_ns - edge_ns) * 1e-9;
     if (raw != old_raw && edge_ns > prev_edge_ns && prev_edge_ns > 0) {
-        vel = (raw - old_raw) / scale / ((double)period * 1e-9);
-        if (raw - old_raw == edge_dir) vel = edge_dir / scale / ((edge_ns - prev_edge_ns) * 1e-9);
+        vel = enc_diff(raw, old_raw) / scale / ((double)period * 1e-9);
+        if (enc_diff(raw, old_raw) == edge_dir) vel = edge_dir / scale / ((edge_ns - prev_edge_ns) * 1e-9);
     } else if (raw != old_raw) {
-        vel = (raw - old_raw) / scale / ((double)period * 1e-9);
+        vel = enc_diff(raw, old_raw) / scale / ((double)period * 1e-9);
     } else {
         vel = velocity;
         if (since > 0 && fabs(1.0 / scale / since) < fabs(vel)) vel = edge_dir / fabs(scale) / since;

@@ -20,6 +20,6 @@ if (enable) {
     double v = out + (double)(int)((unsigned)c - (unsigned)old_counts) * scale;  /* wrap-safe */
     if (v > max_out) v = max_out;
     if (v < min_out) v = min_out;
-    out = v;
+    if (v == v) out = v;  /* a NaN scale (or inf * 0) holds the output instead of poisoning it */
 }
 old_counts = c;

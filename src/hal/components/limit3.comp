@@ -16,6 +16,7 @@ license "GPL";
 author "OpenEMC";
 ;;
 double target = enable ? in : 0.0;
+if (target != target) target = pos;  /* NaN input: brake and hold the current position */
 double dv = maxa * fperiod, vmax = fabs(maxv);
 double dist, lim, lo, hi, v;
 if (target > max_) target = max_;
@@ -26,7 +27,7 @@ if (load) {
     out = pos;
     return;
 }
-if (dv <= 0) dv = 1e-12;
+if (!(dv > 0)) dv = 1e-12;  /* also a NaN maxa */
 dist = target - pos;
 lo = vel - dv;
 hi = vel + dv;

@@ -20,7 +20,7 @@ old_in = v;
 if (reset) {
     timer = 0;
 } else if (trig && (retriggerable || timer <= 0)) {
-    timer = width;
+    timer = width == width ? width : 0;  /* a NaN width gives no pulse instead of a stuck timer */
 } else if (timer > 0) {
     timer -= fperiod;
     if (timer < 0) timer = 0;

@@ -86,7 +86,7 @@ static int plasmac_arc_lost(struct __comp_state *__comp_inst, double dt)
         return 0;
     }
     lost_timer += dt;
-    return lost_timer >= arc_lost_delay;
+    return !(lost_timer < arc_lost_delay);  /* a NaN delay counts as expired: arc lost */
 }
 
 /* External estop: everything off, offsets back to 0 with a stop; 1 when the handler must not run. */

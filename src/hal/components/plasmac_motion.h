@@ -66,10 +66,13 @@ static double plasmac_clamp_z(struct __comp_state *__comp_inst, double z)
     return z;
 }
 
-/* Step a value toward a target by at most step; return 1 once it is there. */
+/* Step a value toward a target by at most step; return 1 once it is there.
+   A NaN target or step holds the value (never drift one way on bad input). */
 static int plasmac_step_toward(double *value, double target, double step)
 {
     double delta = target - *value;
+    if (delta != delta || step != step)
+        return 0;
     if (step <= 0.0 || fabs(delta) <= step) {
         *value = target;
         return 1;
@@ -90,6 +93,8 @@ static int plasmac_move_xy(struct __comp_state *__comp_inst, double tx, double t
                            double dt)
 {
     double dx = tx - xoff, dy = ty - yoff, dist = hypot(dx, dy), step = feed / 60.0 * dt;
+    if (!isfinite(dx) || !isfinite(dy) || step != step)  /* NaN or infinite target, NaN feed: hold */
+        return 0;
     if (step <= 0.0 || dist <= step) {
         xoff = tx;
         yoff = ty;
@@ -158,14 +163,26 @@ static void plasmac_latch_inputs(struct __comp_state *__comp_inst)
     last_set_probe = offset_set_probe;
 }
 
+/* Nearest offset count, saturated at the s32 range (NaN gives 0). */
+static int plasmac_counts(double v)
+{
+    if (v != v)
+        return 0;
+    if (v >= 2147483647.0)
+        return 2147483647;
+    if (v <= -2147483648.0)
+        return -2147483647 - 1;
+    return (int)lround(v);
+}
+
 /* Write the offset counts, enables and status outputs for this cycle. */
 static void plasmac_outputs(struct __comp_state *__comp_inst)
 {
     double scale = plasmac_scale(__comp_inst);
     offset_scale = scale;
-    z_offset_counts = (int)lround(zoff / scale);
-    x_offset_counts = (int)lround(xoff / scale);
-    y_offset_counts = (int)lround(yoff / scale);
+    z_offset_counts = plasmac_counts(zoff / scale);
+    x_offset_counts = plasmac_counts(xoff / scale);
+    y_offset_counts = plasmac_counts(yoff / scale);
     z_offset_enable = machine_is_on;
     xy_offset_enable = machine_is_on;
     feed_hold = plasmac_holds_motion(state);

@@ -248,7 +248,7 @@ static void plasmac_arc_ok(struct __comp_state *__comp_inst, double dt)
     if (arc_ok_now || plasmac_ignore_arc(__comp_inst)) {
         pierce_count++;
         plasmac_goto(__comp_inst, PM_PIERCE_DELAY);
-    } else if (timer >= arc_fail_delay) {
+    } else if (!(timer < arc_fail_delay)) {  /* a NaN delay has expired: no endless start */
         torch_on = 0;
         if (++starts >= max_starts)
             plasmac_abort(__comp_inst, PM_ERR_NO_ARC, PM_STOP_PAUSE);
@@ -342,7 +342,7 @@ static void plasmac_torch_pulse(struct __comp_state *__comp_inst, double dt)
 {
     torch_on = 1;
     timer += dt;
-    if (timer >= torch_pulse_time) {
+    if (!(timer < torch_pulse_time)) {  /* a NaN time ends the pulse at once */
         torch_on = 0;
         plasmac_goto(__comp_inst, PM_IDLE);
     }

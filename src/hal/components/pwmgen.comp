@@ -26,6 +26,7 @@ description """Load with output_type=T0,T1,... (at most 8): 0 pwm only, 1 pwm an
 Functs pwmgen.update (servo rate) and pwmgen.make-pulses (base rate).""";
 ;;
 #define PWM_MAX_CHAN 8
+#define PWM_MAX_CYCLE 2000000000L
 static int output_type[PWM_MAX_CHAN] = { [0 ... PWM_MAX_CHAN - 1] = -1 };
 RTAPI_MP_ARRAY_INT(output_type, PWM_MAX_CHAN, "output types of up to 8 channels");
 
@@ -35,6 +36,7 @@ static void pwm_update_one(struct __comp_state *__comp_inst)
     double sc = scale, d, mag;
     if (sc > -1e-20 && sc < 1e-20) { sc = 1.0; scale = 1.0; }
     d = value / sc + offset;
+    if (d != d) d = 0.0;  /* a NaN command is treated as off */
     mag = fabs(d);
     if (mag > max_dc) mag = max_dc;
     if (mag < min_dc) mag = min_dc;
@@ -55,6 +57,14 @@ static void pwm_drive(struct __comp_state *__comp_inst, int on)
     }
 }
 
+/* Base periods in one PWM cycle, at least 1 and at most PWM_MAX_CYCLE. */
+static long pwm_cycle_len(double freq, long period)
+{
+    double n = 1e9 / freq / period + 0.5;
+    if (!(n < PWM_MAX_CYCLE)) return PWM_MAX_CYCLE;
+    return n < 1.0 ? 1 : (long)n;
+}
+
 /* Length of the high part of the next PWM cycle, in base periods. */
 static long pwm_high_len(struct __comp_state *__comp_inst, double mag)
 {
@@ -72,17 +82,16 @@ static long pwm_high_len(struct __comp_state *__comp_inst, double mag)
 /* Base-rate output of one channel: PDM when pwm-freq is 0, else fixed-frequency PWM. */
 static void pwm_pulse_one(struct __comp_state *__comp_inst, long period)
 {
-    double mag = fabs(duty);
-    if (!enable || mag <= 0) { pwm_drive(__comp_inst, 0); cycle_pos = 0; return; }
-    if (pwm_freq <= 0) {
+    double mag = fmin(fabs(duty), 1.0);
+    if (!enable || !(mag > 0)) { pwm_drive(__comp_inst, 0); cycle_pos = 0; return; }
+    if (!(pwm_freq > 0)) {
         pdm_acc += mag;
         if (pdm_acc >= 1.0) { pdm_acc -= 1.0; pwm_drive(__comp_inst, 1); }
         else pwm_drive(__comp_inst, 0);
         return;
     }
     if (cycle_pos == 0) {
-        cycle_len = (long)(1e9 / pwm_freq / period + 0.5);
-        if (cycle_len < 1) cycle_len = 1;
+        cycle_len = pwm_cycle_len(pwm_freq, period);
         high_len = pwm_high_len(__comp_inst, mag);
     }
     pwm_drive(__comp_inst, cycle_pos < high_len);

@@ -18,6 +18,7 @@ sim-encoder.make-pulses (fast) and sim-encoder.update-speed serve all channels."
 ;;
 #define SIMENC_MAX_CHAN 8
 #define SIMENC_ONE 4294967296.0
+#define SIMENC_ONE_LL 4294967296LL
 static int num_chan = 0;
 RTAPI_MP_INT(num_chan, "number of channels");
 static char *names[SIMENC_MAX_CHAN];
@@ -27,14 +28,12 @@ static long simenc_base_ns;
 /* Fast part of one channel: advance the phase accumulator and drive A/B/Z. */
 static void simenc_pulse_one(struct __comp_state *__comp_inst, long period)
 {
-    long long before = accum >> 32, after;
     unsigned p = ppr ? ppr : 1;
     long long per_rev = 4LL * p;
     simenc_base_ns = period;
-    accum += addval;
-    after = accum >> 32;
-    if (after > before) { state = (state + 1) & 3; edges++; }
-    else if (after < before) { state = (state + 3) & 3; edges--; }
+    accum += addval;  /* accum holds only the fraction of an edge, so it never overflows */
+    if (accum >= SIMENC_ONE_LL) { accum -= SIMENC_ONE_LL; state = (state + 1) & 3; edges++; }
+    else if (accum < 0) { accum += SIMENC_ONE_LL; state = (state + 3) & 3; edges--; }
     phase_A = state == 1 || state == 2;
     phase_B = state >= 2;
     phase_Z = ((edges % per_rev) + per_rev) % per_rev == 0;
@@ -51,6 +50,7 @@ static void simenc_speed_one(struct __comp_state *__comp_inst)
     rate = speed / sc * 4.0 * p;
     if (simenc_base_ns <= 0) { addval = 0; return; }
     rate *= simenc_base_ns * 1e-9;
+    if (rate != rate) rate = 0.0;  /* a NaN speed stops the encoder */
     if (rate > 0.5) rate = 0.5;
     if (rate < -0.5) rate = -0.5;
     addval = (long long)(rate * SIMENC_ONE);

@@ -9,9 +9,10 @@ include <rtapi_math.h>;
 license "GPL";
 author "OpenEMC";
 ;;
-double sc = scale, old = pos;
+double sc = scale, old = pos, step;
 if (sc == 0.0) sc = 1.0;
-pos += velocity_cmd / sc * fperiod;
+step = velocity_cmd / sc * fperiod;
+if (isfinite(step)) pos += step;  /* a NaN or infinite command does not move the spindle */
 if (index_enable && floor(pos) != floor(old)) {
     pos -= pos > old ? floor(pos) : ceil(pos);
     index_enable = 0;

@@ -199,12 +199,18 @@ static double stepgen_timing_limit(struct __comp_state *__comp_inst)
     return 1.0 / (min_period * 0.000000001);
 }
 
+/* A step rate as an int for messages, saturated at INT_MAX. */
+static int stepgen_int(double v)
+{
+    return v < 2147483647.0 ? (int)v : 2147483647;
+}
+
 /* Apply maxvel to the timing limit (correcting a too high maxvel); returns steps/s. */
 static double stepgen_vel_limit(struct __comp_state *__comp_inst, int chan, double fmax,
                                 double scale)
 {
     double want;
-    if (maxvel <= 0.0) {
+    if (!(maxvel > 0.0)) {
         maxvel = 0.0;
         return fmax;
     }
@@ -212,9 +218,9 @@ static double stepgen_vel_limit(struct __comp_state *__comp_inst, int chan, doub
     if (want <= fmax) return want;
     if (!warned) {
         rtapi_print_msg(RTAPI_MSG_ERR, "STEPGEN: Channel %d: The requested maximum velocity of "
-                        "%d steps/sec is too high.\n", chan, (int)want);
+                        "%d steps/sec is too high.\n", chan, stepgen_int(want));
         rtapi_print_msg(RTAPI_MSG_ERR, "STEPGEN: The maximum number of steps possible is %d "
-                        "steps per second\n", (int)fmax);
+                        "steps per second\n", stepgen_int(fmax));
         warned = 1;
     }
     maxvel = fmax / fabs(scale);
@@ -225,7 +231,7 @@ static double stepgen_vel_limit(struct __comp_state *__comp_inst, int chan, doub
 static double stepgen_acc_limit(struct __comp_state *__comp_inst, double fmax, double scale)
 {
     double amax = fmax * servo_rate;
-    if (maxaccel <= 0.0) {
+    if (!(maxaccel > 0.0)) {
         maxaccel = 0.0;
         return amax;
     }
@@ -266,10 +272,10 @@ static double stepgen_plan(double cmd, double cmd_vel, double pos, double vel, d
     return vel + ac * servo_s;
 }
 
-/* Valid position scale of the channel: a (near) zero scale is reset to 1. */
+/* Valid position scale of the channel: a (near) zero, infinite or NaN scale is reset to 1. */
 static double stepgen_scale(struct __comp_state *__comp_inst)
 {
-    if (position_scale < 1e-20 && position_scale > -1e-20) position_scale = 1.0;
+    if (!(fabs(position_scale) >= 1e-20) || isinf(position_scale)) position_scale = 1.0;
     return position_scale;
 }
 
@@ -295,8 +301,11 @@ static void stepgen_freq_one(struct __comp_state *__comp_inst, int chan)
         double cmd_vel = (cmd - old_pos_cmd) * servo_rate;
         double pos = (accum - STEPGEN_HALF) * (1.0 / STEPGEN_ONE);
         old_pos_cmd = cmd;
-        nv = stepgen_clamp(stepgen_plan(cmd, cmd_vel, pos, freq, amax), -fmax, fmax);
+        nv = isfinite(cmd_vel) ? stepgen_plan(cmd, cmd_vel, pos, freq, amax) : NAN;
+        nv = stepgen_clamp(nv, -fmax, fmax);
     }
+    if (nv != nv)  /* a NaN or infinite command: ramp down to a stop */
+        nv = stepgen_clamp(0.0, freq - amax * servo_s, freq + amax * servo_s);
     freq = frequency = nv;
     target_addval = (long long)(nv * per_hz);
     deltalim = (long long)(amax * per_hz_s);

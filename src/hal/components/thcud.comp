@@ -48,7 +48,7 @@ static double thcud_towards_zero(double value, double step)
 /* Apply or remove the height correction and copy the velocities. */
 FUNCTION(_)
 {
-    double step = fabs(correction_vel);
+    double step = correction_vel == correction_vel ? fabs(correction_vel) : 0.0;  /* NaN: no correction */
     int at_speed = thcud_at_speed(current_vel, requested_vel, velocity_tol);
     cur_vel = current_vel;
     req_vel = requested_vel;

@@ -36,7 +36,7 @@ FUNCTION(process)
         if (v != last[i]) quiet[i] = 0;
         else quiet[i] += fperiod;
         last[i] = v;
-        if (quiet[i] > timeout(i)) armed = 0;
+        if (!(quiet[i] <= timeout(i))) armed = 0;  /* a NaN timeout counts as expired */
     }
     ok_out = armed;
 }

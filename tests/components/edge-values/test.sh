@@ -237,3 +237,206 @@ set demux-gen.00.in-float 1e300
 cycle 1
 get demux-gen.00.out-s32-00
 S
+echo "stepgen: a NaN position command ramps the rate down and the channel still follows later commands"
+run <<'S'
+load stepgen step_type=0
+period 100000
+functs stepgen.update-freq stepgen.make-pulses stepgen.capture-position
+set stepgen.0.position-scale 100
+set stepgen.0.maxvel 20
+set stepgen.0.maxaccel 2000
+set stepgen.0.enable 1
+set stepgen.0.position-cmd 0.05
+cycle 20
+set stepgen.0.position-cmd nan
+cycle 1
+get stepgen.0.frequency
+cycle 400
+get stepgen.0.frequency
+set stepgen.0.position-cmd -0.02
+cycle 400
+get stepgen.0.counts stepgen.0.frequency
+S
+echo "stepgen: a NaN velocity command ramps down to 0; a NaN maxaccel or scale means the default"
+run <<'S'
+load stepgen step_type=0 ctrl_type=v
+period 100000
+functs stepgen.update-freq stepgen.make-pulses stepgen.capture-position
+set stepgen.0.maxaccel 20000
+set stepgen.0.enable 1
+set stepgen.0.velocity-cmd 1000
+cycle 100
+set stepgen.0.velocity-cmd nan
+cycle 50
+get stepgen.0.frequency
+cycle 50
+get stepgen.0.frequency
+set stepgen.0.maxaccel nan
+set stepgen.0.position-scale nan
+set stepgen.0.velocity-cmd 500
+cycle 1
+get stepgen.0.frequency stepgen.0.maxaccel stepgen.0.position-scale
+S
+echo "pwmgen: a NaN value is off and leaves no stuck state; a tiny pwm-freq gives a long finite cycle"
+run <<'S'
+load pwmgen output_type=0
+period 1000000
+functs pwmgen.update pwmgen.make-pulses
+set pwmgen.0.enable 1
+set pwmgen.0.value nan
+cycle 3
+get pwmgen.0.curr-dc pwmgen.0.pwm
+set pwmgen.0.value 1
+trace 2 pwmgen.0.pwm
+set pwmgen.0.value 0.25
+set pwmgen.0.pwm-freq 1e-300
+trace 2 pwmgen.0.pwm
+S
+echo "sim_encoder: a NaN speed stops the counts"
+run <<'S'
+load sim_encoder
+period 1000000
+functs sim-encoder.update-speed sim-encoder.make-pulses
+set sim-encoder.0.ppr 2
+set sim-encoder.0.speed 62.5
+cycle 10
+get sim-encoder.0.rawcounts
+set sim-encoder.0.speed nan
+trace 4 sim-encoder.0.rawcounts
+set sim-encoder.0.speed -62.5
+cycle 10
+get sim-encoder.0.rawcounts
+S
+echo "watchdog: a NaN timeout counts as expired, so ok-out drops"
+run <<'S'
+load watchdog num_inputs=1
+period 100000000
+functs watchdog.set-timeouts watchdog.process
+set watchdog.timeout-0 nan
+set watchdog.enable-in 1
+cycle 1
+get watchdog.ok-out
+S
+echo "oneshot: a NaN width gives no pulse, and the next trigger with a valid width works"
+run <<'S'
+load oneshot
+period 100000000
+functs oneshot.0
+set oneshot.0.retriggerable 0
+set oneshot.0.width nan
+set oneshot.0.in 1
+cycle 1
+get oneshot.0.out oneshot.0.time-left
+set oneshot.0.in 0
+set oneshot.0.width 0.25
+cycle 1
+set oneshot.0.in 1
+cycle 1
+get oneshot.0.out oneshot.0.time-left
+S
+echo "sim_spindle: a NaN or infinite velocity does not move the spindle"
+run <<'S'
+load sim_spindle
+period 100000000
+functs sim-spindle.0
+set sim-spindle.0.velocity-cmd 3
+cycle 1
+set sim-spindle.0.velocity-cmd nan
+cycle 1
+get sim-spindle.0.position-fb
+set sim-spindle.0.velocity-cmd inf
+cycle 1
+set sim-spindle.0.velocity-cmd 3
+cycle 1
+get sim-spindle.0.position-fb
+S
+echo "thcud: a NaN correction-vel makes no correction instead of a NaN Z command"
+run <<'S'
+load thcud
+functs thcud
+set thcud.current-vel 10
+set thcud.requested-vel 10
+set thcud.torch-on 1
+set thcud.arc-ok 1
+set thcud.enable 1
+set thcud.torch-up 1
+set thcud.z-pos-in 5
+set thcud.correction-vel nan
+cycle 1
+set thcud.correction-vel 0.5
+set thcud.torch-on 0
+cycle 1
+get thcud.z-pos-out thcud.removing-offset
+S
+echo "plasmac: a NaN probe-start-height holds the torch instead of driving it down"
+run <<'S'
+load plasmac
+functs plasmac
+set plasmac.machine-is-on 1
+set plasmac.torch-enable 1
+set plasmac.axis-z-min-limit 0
+set plasmac.axis-z-max-limit 100
+set plasmac.axis-z-position 50
+set plasmac.setup-feed-rate 60000
+set plasmac.probe-feed-rate 600
+set plasmac.probe-start-height nan
+set plasmac.pierce-height 4
+set plasmac.cut-height 1.5
+set plasmac.mode 1
+set plasmac.program-is-running 1
+set plasmac.cutting-start 1
+trace 3 plasmac.state-out plasmac.z-offset-counts
+S
+echo "knob2float: a NaN scale holds the output, which then follows the counts again"
+run <<'S'
+load knob2float
+functs knob2float.0
+set knob2float.0.max-out 100
+set knob2float.0.enable 1
+set knob2float.0.scale 0.5
+cycle 1
+set knob2float.0.counts 4
+cycle 1
+set knob2float.0.scale nan
+set knob2float.0.counts 6
+cycle 1
+get knob2float.0.out
+set knob2float.0.scale 0.5
+set knob2float.0.counts 8
+cycle 1
+get knob2float.0.out
+S
+echo "plasmac: a NaN torch-pulse-time ends the pulse at once instead of leaving the torch on"
+run <<'S'
+load plasmac
+functs plasmac
+set plasmac.machine-is-on 1
+set plasmac.torch-enable 1
+set plasmac.axis-z-min-limit 0
+set plasmac.axis-z-max-limit 100
+set plasmac.axis-z-position 50
+set plasmac.program-is-idle 1
+set plasmac.torch-pulse-time nan
+set plasmac.torch-pulse-start 1
+trace 3 plasmac.state-out plasmac.torch-on
+S
+echo "limit3: a NaN input brakes and holds; a NaN maxa is no acceleration, not a stuck NaN"
+run <<'S'
+load limit3
+functs limit3.0
+period 1000000
+set limit3.0.maxv 100
+set limit3.0.maxa 1000
+set limit3.0.in 1
+cycle 20
+set limit3.0.in nan
+cycle 500
+get limit3.0.out
+set limit3.0.in 0.5
+cycle 500
+get limit3.0.out
+set limit3.0.maxa nan
+set limit3.0.in 0.75
+cycle 10
+get limit3.0.out
+S

@@ -217,7 +217,7 @@ int genhex_forward(const genhex_geom_t *geom, const double lengths[GENHEX_STRUTS
             q_to_pose(q, pos);
             return 0;
         }
-        if (solve->iterations >= solve->limit_iterations)
+        if (solve->iterations >= solve->limit_iterations || solve->iterations >= GENHEX_MAX_ITERATIONS)
             return GENHEX_NO_CONVERGENCE;
         solve->iterations++;
         int rc = newton_step(geom, q, lengths, r, solve->max_error);

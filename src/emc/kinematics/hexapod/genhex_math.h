@@ -9,6 +9,8 @@ extern "C" {
 #endif
 
 #define GENHEX_STRUTS 6
+/* Hard cap on Newton steps per forward call, whatever limit-iterations says (bounded cycle time). */
+#define GENHEX_MAX_ITERATIONS 1000
 
 /* Machine geometry: joint centres and joint-axis unit vectors of the base and the platform. */
 typedef struct {
@@ -24,7 +26,7 @@ typedef struct {
 typedef struct {
     double conv_criterion;       /* converged when every strut length error is below this */
     double max_error;            /* a Newton step larger than this means the solve ran away */
-    unsigned limit_iterations;   /* give up after this many Newton steps */
+    unsigned limit_iterations;   /* give up after this many Newton steps (at most GENHEX_MAX_ITERATIONS) */
     unsigned iterations;         /* out: steps taken by the last call */
     double error;                /* out: largest strut length error at the end */
 } genhex_solve_t;

@@ -55,6 +55,8 @@ void rose_forward(rose_state_t *s, const double *joints, EmcPose *pos);
 void rose_inverse(rose_state_t *s, const EmcPose *pos, double *joints);
 
 #define PENTA_STRUTS 5
+/* Hard cap on Newton steps per forward call, whatever limit-iterations says (bounded cycle time). */
+#define PENTA_MAX_ITERATIONS 1000
 
 /* Pentapod: five struts from base points to rings around the tool axis. */
 typedef struct {
@@ -62,7 +64,7 @@ typedef struct {
     double ring_r[PENTA_STRUTS];     /* ring radius around the tool axis */
     double ring_z[PENTA_STRUTS];     /* ring height along the tool axis */
     double convergence;              /* forward stops when every strut error is below */
-    unsigned limit_iterations;       /* forward gives up after this many steps */
+    unsigned limit_iterations;       /* forward gives up after this many steps (at most PENTA_MAX_ITERATIONS) */
     double max_error;                /* forward gives up when a step is larger */
 } penta_geom_t;
 

@@ -141,7 +141,7 @@ int penta_forward(const penta_geom_t *g, const double *joints, EmcPose *pos, uns
     double q[PENTA_DOF] = {pos->tran.x, pos->tran.y, pos->tran.z, pos->a, pos->b};
     unsigned n = 0;
     int rc = 0;
-    while (n < g->limit_iterations && (rc = newton_step(g, joints, q)) == 0)
+    while (n < g->limit_iterations && n < PENTA_MAX_ITERATIONS && (rc = newton_step(g, joints, q)) == 0)
         n++;
     *iterations = n;
     if (rc != 1)
