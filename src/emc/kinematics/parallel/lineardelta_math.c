@@ -15,19 +15,13 @@ static void tower(const lineardelta_geom_t *g, int k, double *tx, double *ty)
 /* Rods meet below the carriages: the lower meeting point of three spheres. */
 int lineardelta_forward(const lineardelta_geom_t *g, const double *joints, EmcPose *pos)
 {
-    double c[3][3], rad[3], p[3];
+    double c[3][3], rad[3];
     for (int k = 0; k < 3; k++) {
         tower(g, k, &c[k][0], &c[k][1]);
         c[k][2] = joints[k];
         rad[k] = g->l;
     }
-    if (trilaterate(c, rad, 0, p) < 0)
-        return -1;
-    pos->tran.x = p[0];
-    pos->tran.y = p[1];
-    pos->tran.z = p[2];
-    cart_pass_forward(joints, pos, 3);
-    return 0;
+    return trilaterate_pose(c, rad, 0, joints, pos);
 }
 
 /* Each carriage sits the rod's vertical extent above the effector. */

@@ -11,6 +11,9 @@ extern "C" {
 
 /* Point where three spheres meet (the lower or upper of the two); -1 when they do not. */
 int trilaterate(const double centre[3][3], const double radius[3], int upper, double out[3]);
+/* Forward map of a three-strut machine: XYZ where the spheres meet, joints 3.. pass through. */
+int trilaterate_pose(const double centre[3][3], const double radius[3], int upper,
+                     const double *joints, EmcPose *pos);
 
 /* Linear delta: towers on a circle of radius r, rods of length l. */
 typedef struct {

@@ -14,7 +14,7 @@ static void arm_dir(int k, double *cx, double *sy)
 /* Shins meet below the knees: spheres around knee minus the effector offset. */
 int rotarydelta_forward(const rotarydelta_geom_t *g, const double *joints, EmcPose *pos)
 {
-    double c[3][3], rad[3], p[3];
+    double c[3][3], rad[3];
     for (int k = 0; k < 3; k++) {
         double cx, sy, th = joints[k] * DEG;
         arm_dir(k, &cx, &sy);
@@ -24,13 +24,7 @@ int rotarydelta_forward(const rotarydelta_geom_t *g, const double *joints, EmcPo
         c[k][2] = -g->thigh_length * sin(th);
         rad[k] = g->shin_length;
     }
-    if (trilaterate(c, rad, 0, p) < 0)
-        return -1;
-    pos->tran.x = p[0];
-    pos->tran.y = p[1];
-    pos->tran.z = p[2];
-    cart_pass_forward(joints, pos, 3);
-    return 0;
+    return trilaterate_pose(c, rad, 0, joints, pos);
 }
 
 /* Thigh angle of one arm for the effector point in that arm's frame (knee outward). */

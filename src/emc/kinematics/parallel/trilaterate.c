@@ -69,3 +69,17 @@ int trilaterate(const double centre[3][3], const double radius[3], int upper, do
         out[k] = centre[0][k] + x * e[0][k] + y * e[1][k] + z * e[2][k];
     return 0;
 }
+
+/* Forward map of a three-strut machine: XYZ where the spheres meet, joints 3.. pass through. */
+int trilaterate_pose(const double centre[3][3], const double radius[3], int upper,
+                     const double *joints, EmcPose *pos)
+{
+    double p[3];
+    if (trilaterate(centre, radius, upper, p) < 0)
+        return -1;
+    pos->tran.x = p[0];
+    pos->tran.y = p[1];
+    pos->tran.z = p[2];
+    cart_pass_forward(joints, pos, 3);
+    return 0;
+}

@@ -14,15 +14,9 @@ static void base_points(const tripod_geom_t *g, double c[3][3])
 /* Spheres of the strut lengths around the base joints; above the base unless below. */
 int tripod_forward(const tripod_geom_t *g, const double *joints, EmcPose *pos, int below)
 {
-    double c[3][3], p[3];
+    double c[3][3];
     base_points(g, c);
-    if (trilaterate(c, joints, !below, p) < 0)
-        return -1;
-    pos->tran.x = p[0];
-    pos->tran.y = p[1];
-    pos->tran.z = p[2];
-    cart_pass_forward(joints, pos, 3);
-    return 0;
+    return trilaterate_pose(c, joints, !below, joints, pos);
 }
 
 /* Strut k is the distance from base joint k to the tool point. */
