@@ -25,7 +25,7 @@ void rotate(double p[3], int axis, double deg, const double c[3])
 
 } // namespace
 
-// Apply a GEOMETRY string to a 9-axis point: letters are applied from the last to the first;
+// Apply a GEOMETRY string to a 9-axis point: letters are applied from the first to the last;
 // X Y Z and U V W translate along x y z, A B C rotate about x y z (degrees), '-' before a
 // letter reverses it, '!' makes rotations use the gui_rot_offsets centre for the rotary
 // letters given to gui_respect_offsets. An empty geometry means "XYZ".
@@ -36,7 +36,7 @@ void lcnc_vertex9(const double pt9[9], double out[3], const char *geometry)
     const char *g = (geometry && *geometry) ? geometry : "XYZ";
     bool respect = rot_offsets.respect || strchr(g, '!') != nullptr;
     out[0] = out[1] = out[2] = 0;
-    for (size_t k = strlen(g); k-- > 0;) {
+    for (size_t k = 0; g[k]; k++) {
         const char *hit = strchr(letters, g[k] & ~0x20);
         if (!hit || !*hit) continue;
         int idx = static_cast<int>(hit - letters);
