@@ -2,11 +2,14 @@
 """nmlcmd: print the controller's status and send it commands from the shell, in the spirit of halcmd."""
 
 import json
+import os
 import shlex
 import sys
 import time
 
-import linuxcnc
+# Run from the tree without rip-environment too: the module is in ../lib/python.
+sys.path.append(os.path.join(os.path.dirname(os.path.dirname(os.path.realpath(__file__))), "lib", "python"))
+import linuxcnc  # noqa: E402
 
 USAGE = """Usage: nmlcmd [OPTIONS] COMMAND [ARGS...]
        nmlcmd [OPTIONS] -f FILE       (one command per line; '-' reads stdin)
@@ -113,7 +116,6 @@ class Session:
 
 def instance():
     """This process's instance number, as the libraries see it."""
-    import os
     return os.environ.get("OPENEMC_INSTANCE", "0")
 
 
@@ -310,7 +312,6 @@ def parse_options(argv):
 
 def select_nml(opts):
     """Point the linuxcnc module at the configuration's .nml file."""
-    import os
     if opts.get("nml"):
         linuxcnc.nmlfile = opts["nml"]
     elif opts.get("ini"):
