@@ -1,6 +1,5 @@
 """errors_test.py: the error channel is one queue: each message to exactly one reader, in order."""
 import subprocess
-import sys
 import linuxcnc
 
 c = linuxcnc.command()
@@ -14,7 +13,7 @@ for i in range(6):
 c.wait_complete()
 got_a = [a.poll(), a.poll()]
 got_b = [b.poll(), b.poll()]
-child = subprocess.run([sys.executable, "-c",
+child = subprocess.run(["python3", "-c",
                         "import linuxcnc; e = linuxcnc.error_channel(); print(e.poll()); print(e.poll())"],
                        capture_output=True, text=True, check=True)
 print("reader a:", got_a)
