@@ -60,6 +60,8 @@ static void hc_hallib_dir(char *buf, size_t size)
         *slash = '\0';
     if (snprintf(buf, size, "%s/../lib/hallib", n > 0 ? exe : ".") >= (int)size)
         snprintf(buf, size, "../lib/hallib");
+    if (realpath(buf, exe))
+        snprintf(buf, size, "%s", exe);
 }
 
 /* A file name as given, or for "LIB:name" the path of name in the HAL library directory. */

@@ -82,10 +82,13 @@ proc ::haltcl::check_ini_name {path} {
 # "file:line: message" for an error raised while sourcing a file (innermost file named).
 proc ::haltcl::error_location {file options message} {
     set info [dict get $options -errorinfo]
+    set prefix "$file: "
     if {[regexp {\(file "([^"]+)" line (\d+)\)} $info -> where line]} {
-        return "$where:$line: $message"
+        set prefix "$where:$line: "
     }
-    return "$file: $message"
+    set lines {}
+    foreach text [split $message "\n"] { lappend lines "$prefix$text" }
+    return [join $lines "\n"]
 }
 
 # Read Tcl commands from stdin (prompting on a terminal) and run them.

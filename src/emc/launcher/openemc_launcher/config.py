@@ -76,7 +76,7 @@ class Config:
         if not value:
             return tree.default_nml
         value = os.path.expanduser(value)
-        return value if os.path.isabs(value) else os.path.join(self.directory, value)
+        return os.path.normpath(value if os.path.isabs(value) else os.path.join(self.directory, value))
 
     def _app_delay(self):
         """[APPLICATIONS]DELAY in seconds (default 0); a non-number is an error."""

@@ -71,7 +71,7 @@ class IniChecker:
             self.say("error", "[%s]%s: Invalid integer value '%s'" % (section, key, text),
                      section, key)
         elif (low is not None and value < low) or (high is not None and value > high):
-            bounds = "[%s,%s]" % ("" if low is None else low, "" if high is None else high)
+            bounds = "[%s,%s]" % ("..." if low is None else low, "..." if high is None else high)
             self.say("error", "[%s]%s: Integer value '%s' out of range %s"
                      % (section, key, text, bounds), section, key)
             return None
@@ -210,9 +210,10 @@ class IniChecker:
             self.say("warning", "[KINS]KINEMATICS coordinates=%s differs from "
                      "[TRAJ]COORDINATES=%s" % (coordinates, traj), "KINS", "KINEMATICS")
         for joint, letter in enumerate(letters[:joints]):
-            self.nesting(joint, letter)
+            if letter in AXIS_LETTERS:
+                self.nesting(joint, letter)
             self.unspecified("JOINT_%d" % joint, "1.0")
-        for letter in sorted(set(letters), key=AXIS_LETTERS.index):
+        for letter in sorted(set(letters) & set(AXIS_LETTERS), key=AXIS_LETTERS.index):
             self.unspecified("AXIS_%s" % letter, "1.0")
 
     def run(self):
