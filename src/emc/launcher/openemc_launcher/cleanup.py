@@ -7,7 +7,7 @@ import time
 from . import children as kids
 from . import halstate, instance, sysv
 
-USER_COMP_GRACE_S = 3.0
+USER_COMP_GRACE_S = 2.0
 STOP_SIGNALS = {signal.SIGINT, signal.SIGTERM, signal.SIGHUP}
 
 

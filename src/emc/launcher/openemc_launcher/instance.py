@@ -17,20 +17,22 @@ from .errors import LaunchError
 
 MAX_INSTANCE = 255
 LOCK_DIR = "openemc-linuxcnc-locks"
+LOCK_BASE = "/tmp"                    # fixed, so launches with different TMPDIRs still meet
 POOL_DIR = "openemc-instance-locks"   # the test runners' pool; auto-picked instances take it too
 SESSION_VAR = "OPENEMC_LAUNCHER_PID"
 
 
-def lock_dir(name):
+def lock_dir(name, base=None):
     """A lock directory shared by all users (mode 1777), else this user's own one."""
-    path = os.path.join(tempfile.gettempdir(), name)
+    base = base or tempfile.gettempdir()
+    path = os.path.join(base, name)
     try:
         os.mkdir(path)
         os.chmod(path, 0o1777)
     except FileExistsError:
         pass
     except OSError:
-        path = os.path.join(tempfile.gettempdir(), "%s-%d" % (name, os.getuid()))
+        path = os.path.join(base, "%s-%d" % (name, os.getuid()))
         os.makedirs(path, mode=0o700, exist_ok=True)
     return path
 
@@ -76,7 +78,7 @@ def read_owner(fd):
 
 def owner_of(instance):
     """The "pid ini" text of the launcher holding an instance (for messages)."""
-    fd, _ = open_lock(lock_dir(LOCK_DIR), instance)
+    fd, _ = open_lock(lock_dir(LOCK_DIR, LOCK_BASE), instance)
     if fd is None:
         return ""
     text = read_owner(fd)
@@ -196,7 +198,7 @@ def parse_instance(text):
 
 def claim_explicit(instance, say):
     """The instance named by OPENEMC_INSTANCE: refused while in use, cleaned when left over."""
-    fd, writable = try_lock(lock_dir(LOCK_DIR), instance)
+    fd, writable = try_lock(lock_dir(LOCK_DIR, LOCK_BASE), instance)
     if fd is None:
         raise LaunchError("linuxcnc: OPENEMC_INSTANCE=%d is in use by another linuxcnc (%s); "
                           "stop it first or choose another OPENEMC_INSTANCE"
@@ -221,7 +223,7 @@ def instance_free(instance):
 
 def claim_free():
     """The first free instance from 0 up, with the launcher lock and the test-pool lock held."""
-    launch_dir, pool_dir = lock_dir(LOCK_DIR), lock_dir(POOL_DIR)
+    launch_dir, pool_dir = lock_dir(LOCK_DIR, LOCK_BASE), lock_dir(POOL_DIR)
     for instance in range(MAX_INSTANCE + 1):
         fd, writable = try_lock(launch_dir, instance)
         if fd is None:

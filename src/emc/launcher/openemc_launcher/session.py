@@ -13,7 +13,7 @@ from .logs import Logs
 
 SERVER_READY_S = 10.0
 TASK_READY_S = 10.0
-POLL_S = 0.02
+POLL_S = 0.05
 
 
 def on_signal(signum, frame):
