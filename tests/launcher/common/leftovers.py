@@ -6,7 +6,7 @@ import sys
 
 from openemc_launcher import sysv
 
-NML_KEYS = (1001, 1002, 1003, 100)
+NML_KEYS = (1001, 1002, 1003, 100, 0x544F4C)
 
 
 def processes(instance):

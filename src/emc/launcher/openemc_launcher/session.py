@@ -1,10 +1,12 @@
 """session: the start-up sequence of one configuration (ini.md §3) and its end."""
 import os
+import shutil
 import signal
 import sys
+import tempfile
 import time
 
-from . import cleanup, display, environment, halstate, inicheck, instance, nmlfile, picker, sysv
+from . import cleanup, display, environment, halstate, inicheck, instance, nmlfile, picker
 from .children import Children
 from .config import Config, words
 from .errors import Interrupted, LaunchError
@@ -35,6 +37,7 @@ class Session:
         self.config = self.lease = self.hal_runner = None
         self.nml_buffers = []
         self.realtime_started = False
+        self.tmpdir = None
 
     def tell(self, text):
         """A line for the operator (reaches the terminal even when output is logged)."""
@@ -101,19 +104,27 @@ class Session:
         os.chdir(self.config.directory)
 
     def start_server(self):
-        """Step 7: linuxcncsvr creates the NML buffers; wait until every SHMEM buffer exists."""
+        """Step 7: linuxcncsvr creates the NML buffers and tool data; it writes its ready file
+        (--ready-file) once they all exist."""
         server = self.tree.program("linuxcncsvr")
-        proc = self.children.start("server", [server, "-ini", self.config.path])
-        keys = {sysv.instance_key(key, self.lease.number) for _, key, _ in self.nml_buffers}
+        ready = os.path.join(self.private_dir(), "linuxcncsvr.ready")
+        proc = self.children.start("server", [server, "-ini", self.config.path,
+                                              "--ready-file", ready])
         deadline = time.monotonic() + SERVER_READY_S
-        while not keys <= set(sysv.segments()):
+        while not os.path.exists(ready):
             if proc.poll() is not None:
                 raise LaunchError("linuxcnc: linuxcncsvr exited (status %d) before creating the "
                                   "NML buffers of %s" % (proc.returncode, self.config.nml_file))
             if time.monotonic() > deadline:
                 raise LaunchError("linuxcnc: linuxcncsvr did not create the NML buffers of %s "
                                   "within %.0f s" % (self.config.nml_file, SERVER_READY_S))
-            time.sleep(POLL_S)
+            time.sleep(POLL_S / 5)
+
+    def private_dir(self):
+        """A temporary directory of this session (removed at the end)."""
+        if self.tmpdir is None:
+            self.tmpdir = tempfile.mkdtemp(prefix="linuxcnc.")
+        return self.tmpdir
 
     def start_realtime(self):
         """Steps 8-9: rtapi_app, then the planner and homing modules."""
@@ -188,6 +199,8 @@ class Session:
             status = e.status
         finally:
             cleanup.cleanup(self)
+            if self.tmpdir:
+                shutil.rmtree(self.tmpdir, ignore_errors=True)
             for sig, handler in handlers.items():
                 signal.signal(sig, handler)
         self.logs.finish(status)

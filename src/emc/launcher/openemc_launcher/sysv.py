@@ -5,7 +5,7 @@ import re
 
 # Base keys of the segments a session may leave (each instance XORs its number << 24).
 HAL_KEYS = (0x48414C32, 0x90280A48, 0x48484C34)      # HAL, RTAPI, id counter
-OTHER_KEYS = (0x130CF406, 0x434C522B)                # halscope, classicladder
+OTHER_KEYS = (0x130CF406, 0x434C522B, 0x00544F4C)    # halscope, classicladder, tool data
 FIFO_NAME = re.compile(r"/\.rtapi_fifo(?:\.(\d+))?$")
 IPC_RMID = 0
 
