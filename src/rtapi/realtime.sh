@@ -28,7 +28,7 @@ master_pids() {
     local d env state comm
     for d in /proc/[0-9]*; do
         comm=
-        read -r comm < "$d/comm" 2>/dev/null
+        { read -r comm < "$d/comm"; } 2>/dev/null
         [ "$comm" = rtapi_app ] || continue
         state=$(sed -n 's/^State:[[:space:]]*\(.\).*/\1/p' "$d/status" 2>/dev/null)
         [ -n "$state" ] && [ "$state" != Z ] || continue
