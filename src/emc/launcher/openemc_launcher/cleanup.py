@@ -64,6 +64,7 @@ def cleanup(session):
     try:
         session.note("cleaning up")
         session.children.stop("display")
+        session.children.stop("splash")
         for name in [n for n in session.children.started if n.startswith("app")]:
             session.children.stop(name)
         if session.realtime_started:

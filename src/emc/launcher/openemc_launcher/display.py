@@ -70,6 +70,36 @@ def run_display(argv, children, tell):
     return 128 - status if status < 0 else status
 
 
+SPLASH = """
+wm overrideredirect . 1
+image create photo splash -file {%s}
+label .l -image splash -borderwidth 0
+pack .l
+update idletasks
+wm geometry . +[expr {([winfo screenwidth .] - [winfo reqwidth .]) / 2}]+[expr {([winfo screenheight .] - [winfo reqheight .]) / 2}]
+after %d exit
+"""
+
+
+def start_splash(config, env, children):
+    """[DISPLAY]INTRO_GRAPHIC for INTRO_TIME seconds (default 5), when there is an X display."""
+    image = config.get("DISPLAY", "INTRO_GRAPHIC")
+    wish = shutil.which("wish", path=env.get("PATH", ""))
+    if not image or not env.get("DISPLAY") or not wish:
+        return
+    path = image if os.path.isabs(image) else os.path.join(config.directory, image)
+    if not os.path.isfile(path):
+        return
+    try:
+        seconds = float((config.get("DISPLAY", "INTRO_TIME") or "5").split()[0])
+    except ValueError:
+        seconds = 5.0
+    proc = children.start("splash", [wish], stdin=subprocess.PIPE, stdout=subprocess.DEVNULL,
+                          stderr=subprocess.DEVNULL)
+    proc.stdin.write((SPLASH % (path, int(seconds * 1000))).encode())
+    proc.stdin.close()
+
+
 def start_applications(config, env, children, tell):
     """[APPLICATIONS]: wait DELAY seconds, then start each APP in the background."""
     if not config.apps:

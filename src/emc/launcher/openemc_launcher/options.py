@@ -13,8 +13,8 @@ files and the [DISPLAY]DISPLAY program; when the display exits everything is
 stopped again. '-' (or -l) starts the configuration used last.
 
 Options:
-  -d          debug: show every step and command
-  -v          verbose: say what is started
+  -d          debug: show every step and command (output stays on the terminal)
+  -v          verbose: say what is started (output stays on the terminal)
   -r          keep output on the terminal even when stdin is not a terminal
               (no temporary log files; used by tests)
   -l          use the INI file used last (~/.linuxcncrc [PICKCONFIG]LAST_CONFIG)

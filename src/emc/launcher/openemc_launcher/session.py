@@ -30,7 +30,8 @@ class Session:
         """tree: the Tree the launcher runs from; opts: parsed Options."""
         self.tree, self.opts = tree, opts
         self.env = environment.base_environment(tree, opts)
-        self.logs = Logs(redirect=not opts.no_redirect and not sys.stdin.isatty())
+        keep_on_terminal = opts.no_redirect or opts.verbose or opts.debug
+        self.logs = Logs(redirect=not keep_on_terminal and not sys.stdin.isatty())
         if self.logs.print_file:
             self.env["PRINT_FILE"] = self.logs.print_file
         self.children = Children(self.env, trace=opts.debug)
@@ -102,6 +103,7 @@ class Session:
             self.tell("linuxcnc: running in OPENEMC_INSTANCE=%d (export OPENEMC_INSTANCE=%d to "
                       "reach it with halcmd or Python)" % (self.lease.number, self.lease.number))
         os.chdir(self.config.directory)
+        display.start_splash(self.config, self.env, self.children)
 
     def start_server(self):
         """Step 7: linuxcncsvr creates the NML buffers and tool data; it writes its ready file
