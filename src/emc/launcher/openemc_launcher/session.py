@@ -2,6 +2,7 @@
 import os
 import shutil
 import signal
+import subprocess
 import sys
 import tempfile
 import time
@@ -15,6 +16,7 @@ from .logs import Logs
 
 SERVER_READY_S = 10.0
 TASK_READY_S = 10.0
+USR_READY_S = 30.0
 POLL_S = 0.05
 
 
@@ -141,7 +143,12 @@ class Session:
     def start_usr(self, comp, value, section, key):
         """Steps 10-11: a user program started with halcmd loadusr -Wn COMP PROG ARGS -ini INI."""
         argv = ["halcmd", "loadusr", "-Wn", comp] + words(value) + ["-ini", self.config.path]
-        if self.children.run(argv) != 0:
+        try:
+            status = self.children.run(argv, timeout=USR_READY_S)
+        except subprocess.TimeoutExpired:
+            raise self.config.error(section, key, "'%s' did not make HAL component '%s' ready "
+                                    "within %.0f s" % (value, comp, USR_READY_S))
+        if status != 0:
             raise self.config.error(section, key, "'%s' did not become ready (HAL component "
                                     "'%s')" % (value, comp))
 
