@@ -21,3 +21,6 @@ realtime start 2> /dev/null
 HALLIB_DIR=$PWD/fakelib halcmd -f LIB:outer.hal 2>&1 | sed -e "s|$PWD/||g"
 halcmd -f LIB:no-such-file.hal 2>&1 | sed -e "s|$EMC2_HOME|<top>|g"
 realtime stop
+echo "== linuxcnc_var"
+linuxcnc_var HALLIB_DIR | sed -e "s|$EMC2_HOME|<top>|g"
+linuxcnc_var NO_SUCH_VAR > /dev/null 2>&1; echo "unknown: exit status $?"
