@@ -17,6 +17,7 @@ typedef struct inject {
     const char *file;
     int line;
     int failed;
+    int no_wait;                /* -n: push commands without waiting for their echo */
     uint32_t last_serial;
 } inject_t;
 
@@ -100,6 +101,18 @@ static uint32_t push(inject_t *in, emcmot_command_t *cmd)
     return (uint32_t)serial;
 }
 
+/* Print text with newlines shown as \n, then end the line. */
+static void print_escaped(const char *text)
+{
+    for (const char *p = text; *p; p++) {
+        if (*p == '\n')
+            fputs("\\n", stdout);
+        else
+            putchar(*p);
+    }
+    putchar('\n');
+}
+
 /* Wait for a serial's echo and print a rejection. */
 static void wait_echo(inject_t *in, uint32_t serial, const char *name)
 {
@@ -112,8 +125,10 @@ static void wait_echo(inject_t *in, uint32_t serial, const char *name)
         in->failed = 1;
         return;
     }
-    if (result != EMCMOT_COMMAND_OK)
-        printf("%s: %s: %s\n", name, emcmot_result_name(result), reason);
+    if (result != EMCMOT_COMMAND_OK) {
+        printf("%s: %s: ", name, emcmot_result_name(result));
+        print_escaped(reason);
+    }
 }
 
 /* "fill N NAME fields": push N copies without waiting, stop when the ring is full. */
@@ -216,9 +231,23 @@ static void do_messages(inject_t *in)
 
     while (emcmot_pop_error(in->client, text, sizeof text, &kind) == 1) {
         printf("message: ");
-        for (char *p = text; *p; p++)
-            fputs(*p == '\n' ? "\\n" : (char[]){ *p, 0 }, stdout);
-        printf("\n");
+        print_escaped(text);
+    }
+}
+
+/* "sh WORDS...": run a shell command (halcmd setp ...); its output goes to ours. */
+static void do_shell(inject_t *in, char **w, int n)
+{
+    char cmd[4096] = "";
+
+    for (int i = 1; i < n; i++) {
+        strncat(cmd, w[i], sizeof cmd - strlen(cmd) - 2);
+        strcat(cmd, " ");
+    }
+    fflush(stdout);
+    if (system(cmd) != 0) {
+        fprintf(stderr, "%s:%d: command failed: %s\n", in->file, in->line, cmd);
+        in->failed = 1;
     }
 }
 
@@ -242,6 +271,8 @@ static void run_line(inject_t *in, char **w, int n)
     } else if (!strcmp(w[0], "echo")) {
         for (int i = 1; i < n; i++)
             printf("%s%s", w[i], i + 1 < n ? " " : "\n");
+    } else if (!strcmp(w[0], "sh")) {
+        do_shell(in, w, n);
     } else if (!strcmp(w[0], "fill")) {
         do_fill(in, w, n);
     } else if (!strcmp(w[0], "sync")) {
@@ -252,7 +283,7 @@ static void run_line(inject_t *in, char **w, int n)
             push(in, &cmd);
     } else if (build_command(in, w, n, &cmd) == 0) {
         uint32_t serial = push(in, &cmd);
-        if (serial)
+        if (serial && !in->no_wait)
             wait_echo(in, serial, w[0]);
     }
     fflush(stdout);
@@ -286,40 +317,53 @@ static int attach(inject_t *in, int key)
     return rc;
 }
 
-int main(int argc, char **argv)
+/* Run every line of one script ("-" = standard input). */
+static void run_file(inject_t *in, const char *path)
 {
-    inject_t in = { NULL, 5.0, "-", 0, 0, 0 };
-    int key = EMCMOT_SHM_DEFAULT_KEY, opt;
     char line[4096], *w[MAX_WORDS];
     FILE *f = stdin;
 
-    while ((opt = getopt(argc, argv, "k:t:")) != -1) {
-        if (opt == 'k')
+    in->file = path;
+    in->line = 0;
+    if (strcmp(path, "-") != 0 && !(f = fopen(path, "r"))) {
+        fprintf(stderr, "motion-inject: %s: %s\n", path, strerror(errno));
+        in->failed = 1;
+        return;
+    }
+    while (fgets(line, sizeof line, f)) {
+        int n;
+        in->line++;
+        n = split(line, w);
+        if (n > 0)
+            run_line(in, w, n);
+    }
+    if (f != stdin)
+        fclose(f);
+}
+
+int main(int argc, char **argv)
+{
+    inject_t in = { NULL, 5.0, "-", 0, 0, 0, 0 };
+    int key = EMCMOT_SHM_DEFAULT_KEY, opt;
+
+    while ((opt = getopt(argc, argv, "nk:t:")) != -1) {
+        if (opt == 'n')
+            in.no_wait = 1;
+        else if (opt == 'k')
             key = atoi(optarg);
         else if (opt == 't')
             in.timeout_s = atof(optarg);
         else {
-            fprintf(stderr, "usage: motion-inject [-k SHMEM_KEY] [-t TIMEOUT_S] [SCRIPT]\n");
-            return 2;
-        }
-    }
-    if (optind < argc && strcmp(argv[optind], "-") != 0) {
-        in.file = argv[optind];
-        f = fopen(in.file, "r");
-        if (!f) {
-            fprintf(stderr, "motion-inject: %s: %s\n", in.file, strerror(errno));
+            fprintf(stderr, "usage: motion-inject [-n] [-k SHMEM_KEY] [-t TIMEOUT_S] [SCRIPT...]\n");
             return 2;
         }
     }
     if (attach(&in, key) < 0)
         return 1;
-    while (fgets(line, sizeof line, f)) {
-        int n;
-        in.line++;
-        n = split(line, w);
-        if (n > 0)
-            run_line(&in, w, n);
-    }
+    if (optind == argc)
+        run_file(&in, "-");
+    for (int i = optind; i < argc; i++)
+        run_file(&in, argv[i]);
     emcmot_detach(in.client);
     return in.failed ? 1 : 0;
 }

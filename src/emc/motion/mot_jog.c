@@ -1,7 +1,7 @@
 /* mot_jog.c: jog limits and refusals shared by keyboard and wheel jogs; jog wheels; jog-stop inputs. */
 #include "rtapi.h"
 #include "rtapi_math.h"
-#include "mot_priv.h"
+#include "mot_cmd.h"
 #include "mot_jog.h"
 
 /* Where joint j may jog: its limits once homed, else +-travel around the feedback. */
@@ -19,7 +19,7 @@ void mot_joint_jog_limits(int j, double *lo, double *hi)
     }
 }
 
-/* Report text when report is set; always returns 1 (refused). */
+/* Refuse the command being handled with text (reported) when report is set; returns 1. */
 static int refused(int report, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 static int refused(int report, const char *fmt, ...)
 {
@@ -31,7 +31,7 @@ static int refused(int report, const char *fmt, ...)
     va_start(ap, fmt);
     rtapi_vsnprintf(text, sizeof text, fmt, ap);
     va_end(ap);
-    mot_report("%s", text);
+    mot_refuse(EMCMOT_COMMAND_INVALID_COMMAND, 1, "%s", text);
     return 1;
 }
 
