@@ -13,6 +13,14 @@ static const char *jog_name(jog_kind_t kind)
     return names[kind];
 }
 
+/* Direction a joint jog moves: the velocity's sign, or toward the target of an absolute jog. */
+static double jog_direction(const emcmot_command_t *c, jog_kind_t kind, double from)
+{
+    if (kind == JOG_ABS)
+        return c->offset - from;
+    return c->vel;
+}
+
 /* Refusals shared by joint jogs; the joint, or -1 after refusing. */
 static int joint_jog_refusals(const emcmot_command_t *c, jog_kind_t kind)
 {
@@ -33,7 +41,7 @@ static int joint_jog_refusals(const emcmot_command_t *c, jog_kind_t kind)
                    "Can't jog any joint while homing." : "Can't jog any joints while homing.");
         return -1;
     }
-    if (mot_joint_jog_refused(j, c->vel, 1))
+    if (mot_joint_jog_refused(j, jog_direction(c, kind, mot->joint[j].pos_cmd), 1))
         return -1;
     return j;
 }
