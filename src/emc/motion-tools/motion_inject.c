@@ -43,26 +43,31 @@ static void script_error(inject_t *in, const char *what, const char *word)
     in->failed = 1;
 }
 
-/* Command code from a name ("SET_LINE") or a number ("99"). */
-static int command_code(const char *word)
+/* Command code from a name ("SET_LINE") or any number ("99", "-3"); 0 or -1. */
+static int command_code(const char *word, int *code)
 {
     char *end;
     long n = strtol(word, &end, 10);
 
-    if (end != word && *end == '\0')
-        return (int)n;
-    for (int c = EMCMOT_FIRST_COMMAND; c <= EMCMOT_LAST_COMMAND; c++)
-        if (strcmp(emcmot_command_name(c), word) == 0)
-            return c;
+    if (end != word && *end == '\0') {
+        *code = (int)n;
+        return 0;
+    }
+    for (int c = EMCMOT_FIRST_COMMAND; c <= EMCMOT_LAST_COMMAND; c++) {
+        if (strcmp(emcmot_command_name(c), word) == 0) {
+            *code = c;
+            return 0;
+        }
+    }
     return -1;
 }
 
 /* Build a command from words: NAME field=value ...; 0 or -1. */
 static int build_command(inject_t *in, char **w, int n, emcmot_command_t *cmd)
 {
-    int code = command_code(w[0]);
+    int code;
 
-    if (code < 0) {
+    if (command_code(w[0], &code) < 0) {
         script_error(in, "unknown command", w[0]);
         return -1;
     }
@@ -131,15 +136,35 @@ static void wait_echo(inject_t *in, uint32_t serial, const char *name)
     }
 }
 
-/* "fill N NAME fields": push N copies without waiting, stop when the ring is full. */
+/* Copy words with "%i" in a value replaced by index (fill numbers its commands). */
+static int numbered_words(char **w, int n, long index, char buf[][128], char **out)
+{
+    for (int i = 0; i < n && i < MAX_WORDS; i++) {
+        char *mark = strstr(w[i], "%i");
+        if (mark)
+            snprintf(buf[i], 128, "%.*s%ld%s", (int)(mark - w[i]), w[i], index, mark + 2);
+        else
+            snprintf(buf[i], 128, "%s", w[i]);
+        out[i] = buf[i];
+    }
+    return n;
+}
+
+/* "fill N NAME fields": push N commands without waiting ("%i" in a value becomes 0..N-1),
+ * stop when the ring is full. */
 static void do_fill(inject_t *in, char **w, int n)
 {
+    static char buf[MAX_WORDS][128];
+    char *words[MAX_WORDS];
     emcmot_command_t cmd;
     long count = n > 1 ? strtol(w[1], NULL, 10) : 0, queued = 0;
 
-    if (n < 3 || build_command(in, w + 2, n - 2, &cmd) < 0)
+    if (n < 3)
         return;
     for (; queued < count; queued++) {
+        numbered_words(w + 2, n - 2, queued, buf, words);
+        if (build_command(in, words, n - 2, &cmd) < 0)
+            return;
         long serial = emcmot_push(in->client, &cmd);
         if (serial < 0)
             break;
