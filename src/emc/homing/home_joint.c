@@ -26,11 +26,18 @@ static void fail(const char *fmt, ...)
     home_seq_abort();
 }
 
-/* Next state. */
+/* Next state (from the next cycle on). */
 static void go(int j, int state)
 {
     J(j)->state = state;
     J(j)->pause_started = 0;
+}
+
+/* Next state, run in this same cycle (states that only compute never show on home-state). */
+static void go_now(int j, int state)
+{
+    go(j, state);
+    J(j)->chain = 1;
 }
 
 /* Non-zero while the 0.1 s pause before a move (and the group barrier) holds. */
@@ -135,7 +142,7 @@ static void st_start(int j)
     }
     if (flag(j, EMCMOT_HOME_ABSOLUTE_ENCODER)) {
         home.env.set_position(j, IO(j)->pos_fb + p->home_offset);
-        go(j, flag(j, EMCMOT_HOME_NO_FINAL_MOVE) ? HOME_LOCK : HOME_FINAL_MOVE_START);
+        go_now(j, flag(j, EMCMOT_HOME_NO_FINAL_MOVE) ? HOME_LOCK : HOME_FINAL_MOVE_START);
         return;
     }
     if (flag(j, EMCMOT_HOME_IS_SHARED) && J(j)->home_sw) {
@@ -196,20 +203,18 @@ static void st_initial_search_wait(int j)
 {
     if (J(j)->home_sw) {
         stop(j);
-        go(j, HOME_SET_COARSE_POSITION);
+        go_now(j, HOME_SET_COARSE_POSITION);
         return;
     }
     if (!limit_hit(j))
         end_of_move(j);
 }
 
-/* SET_COARSE_POSITION: position := HOME_OFFSET near the switch, then latch by direction. */
+/* SET_COARSE_POSITION: position := HOME_OFFSET at the switch, then latch by direction. */
 static void st_set_coarse_position(int j)
 {
     const home_params_t *p = &J(j)->params;
 
-    if (!stopped(j))
-        return;
     home.env.set_position(j, p->home_offset);
     if (sign_of(p->home_latch_vel) == sign_of(p->home_search_vel))
         go(j, HOME_FINAL_BACKOFF_START);
@@ -242,12 +247,15 @@ static void st_final_backoff_wait(int j)
         end_of_move(j);
 }
 
-/* Latched: go on to the index or set the position at the latch point. */
+/* Latched: go on to the index, or set the position at the latch point now. */
 static void latched(int j)
 {
     J(j)->latch_fb = IO(j)->pos_fb;
     stop(j);
-    go(j, flag(j, EMCMOT_HOME_USE_INDEX) ? HOME_INDEX_SEARCH_START : HOME_SET_SWITCH_POSITION);
+    if (flag(j, EMCMOT_HOME_USE_INDEX))
+        go(j, HOME_INDEX_SEARCH_START);
+    else
+        go_now(j, HOME_SET_SWITCH_POSITION);
 }
 
 /* RISE_SEARCH: approach the switch slowly until it trips. */
@@ -299,8 +307,6 @@ static void st_fall_search_wait(int j)
 /* SET_SWITCH_POSITION: the latch point reads HOME_OFFSET. */
 static void st_set_switch_position(int j)
 {
-    if (!stopped(j))
-        return;
     home.env.set_position(j, J(j)->params.home_offset + (IO(j)->pos_fb - J(j)->latch_fb));
     go(j, HOME_FINAL_MOVE_START);
 }
@@ -367,14 +373,14 @@ static void st_final_move_wait(int j)
     if (limit_hit(j))
         return;
     if (stopped(j) && IO(j)->pos_cmd == J(j)->params.home)
-        go(j, HOME_LOCK);
+        go_now(j, HOME_LOCK);
 }
 
 /* LOCK / LOCK_WAIT: lock a locking indexer again. */
 static void st_lock(int j)
 {
     if (!flag(j, EMCMOT_HOME_UNLOCK_FIRST)) {
-        go(j, HOME_FINISHED);
+        go_now(j, HOME_FINISHED);
         return;
     }
     IO(j)->unlock = 0;
@@ -384,7 +390,7 @@ static void st_lock(int j)
 static void st_lock_wait(int j)
 {
     if (!IO(j)->is_unlocked)
-        go(j, HOME_FINISHED);
+        go_now(j, HOME_FINISHED);
 }
 
 /* FINISHED: homed. */
@@ -427,13 +433,20 @@ static const state_fn_t handlers[] = {
     [HOME_FINISHED] = st_finished, [HOME_ABORT] = st_idle,
 };
 
-/* One cycle of joint j. */
+#define MAX_CHAINED_STATES 6
+
+/* One cycle of joint j: its state, plus the states it moves to at once. */
 void home_joint_cycle(int j)
 {
-    int state = J(j)->state;
-
-    if (state >= 0 && state <= HOME_ABORT && J(j)->homing)
+    for (int n = 0; n < MAX_CHAINED_STATES; n++) {
+        int state = J(j)->state;
+        if (state < 0 || state > HOME_ABORT || !J(j)->homing)
+            return;
+        J(j)->chain = 0;
         handlers[state](j);
+        if (!J(j)->chain)
+            return;
+    }
 }
 
 /* Begin homing joint j: unhomed, state START. */

@@ -30,6 +30,7 @@ typedef struct home_jstate {
     int index_enable;           /* index-enable as read this cycle */
     int pause_cycles;           /* cycles left of the pause before a move */
     int pause_started;
+    int chain;                  /* the handler moved on to a state that runs this cycle */
     double latch_fb;            /* feedback where the switch or index latched */
     int sync_group;             /* |sequence| of a negative sequence, 0 = none */
 } home_jstate_t;

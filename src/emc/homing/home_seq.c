@@ -151,6 +151,8 @@ void home_seq_cycle(void)
     if (home.run_all && any_with(home.run_sequence + 1)) {
         home.run_sequence++;
         start_number(home.run_sequence);
+        for (int j = 0; j < home.num_joints && home.run_active; j++)
+            home_joint_cycle(j);
         return;
     }
     home.run_active = 0;

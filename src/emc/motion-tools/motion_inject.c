@@ -17,6 +17,7 @@ typedef struct inject {
     const char *file;
     int line;
     int failed;
+    int no_wait;                /* -n: push commands without waiting for their echo */
     uint32_t last_serial;
 } inject_t;
 
@@ -42,26 +43,31 @@ static void script_error(inject_t *in, const char *what, const char *word)
     in->failed = 1;
 }
 
-/* Command code from a name ("SET_LINE") or a number ("99"). */
-static int command_code(const char *word)
+/* Command code from a name ("SET_LINE") or any number ("99", "-3"); 0 or -1. */
+static int command_code(const char *word, int *code)
 {
     char *end;
     long n = strtol(word, &end, 10);
 
-    if (end != word && *end == '\0')
-        return (int)n;
-    for (int c = EMCMOT_FIRST_COMMAND; c <= EMCMOT_LAST_COMMAND; c++)
-        if (strcmp(emcmot_command_name(c), word) == 0)
-            return c;
+    if (end != word && *end == '\0') {
+        *code = (int)n;
+        return 0;
+    }
+    for (int c = EMCMOT_FIRST_COMMAND; c <= EMCMOT_LAST_COMMAND; c++) {
+        if (strcmp(emcmot_command_name(c), word) == 0) {
+            *code = c;
+            return 0;
+        }
+    }
     return -1;
 }
 
 /* Build a command from words: NAME field=value ...; 0 or -1. */
 static int build_command(inject_t *in, char **w, int n, emcmot_command_t *cmd)
 {
-    int code = command_code(w[0]);
+    int code;
 
-    if (code < 0) {
+    if (command_code(w[0], &code) < 0) {
         script_error(in, "unknown command", w[0]);
         return -1;
     }
@@ -100,6 +106,18 @@ static uint32_t push(inject_t *in, emcmot_command_t *cmd)
     return (uint32_t)serial;
 }
 
+/* Print text with newlines shown as \n, then end the line. */
+static void print_escaped(const char *text)
+{
+    for (const char *p = text; *p; p++) {
+        if (*p == '\n')
+            fputs("\\n", stdout);
+        else
+            putchar(*p);
+    }
+    putchar('\n');
+}
+
 /* Wait for a serial's echo and print a rejection. */
 static void wait_echo(inject_t *in, uint32_t serial, const char *name)
 {
@@ -112,19 +130,41 @@ static void wait_echo(inject_t *in, uint32_t serial, const char *name)
         in->failed = 1;
         return;
     }
-    if (result != EMCMOT_COMMAND_OK)
-        printf("%s: %s: %s\n", name, emcmot_result_name(result), reason);
+    if (result != EMCMOT_COMMAND_OK) {
+        printf("%s: %s: ", name, emcmot_result_name(result));
+        print_escaped(reason);
+    }
 }
 
-/* "fill N NAME fields": push N copies without waiting, stop when the ring is full. */
+/* Copy words with "%i" in a value replaced by index (fill numbers its commands). */
+static int numbered_words(char **w, int n, long index, char buf[][128], char **out)
+{
+    for (int i = 0; i < n && i < MAX_WORDS; i++) {
+        char *mark = strstr(w[i], "%i");
+        if (mark)
+            snprintf(buf[i], 128, "%.*s%ld%s", (int)(mark - w[i]), w[i], index, mark + 2);
+        else
+            snprintf(buf[i], 128, "%s", w[i]);
+        out[i] = buf[i];
+    }
+    return n;
+}
+
+/* "fill N NAME fields": push N commands without waiting ("%i" in a value becomes 0..N-1),
+ * stop when the ring is full. */
 static void do_fill(inject_t *in, char **w, int n)
 {
+    static char buf[MAX_WORDS][128];
+    char *words[MAX_WORDS];
     emcmot_command_t cmd;
     long count = n > 1 ? strtol(w[1], NULL, 10) : 0, queued = 0;
 
-    if (n < 3 || build_command(in, w + 2, n - 2, &cmd) < 0)
+    if (n < 3)
         return;
     for (; queued < count; queued++) {
+        numbered_words(w + 2, n - 2, queued, buf, words);
+        if (build_command(in, words, n - 2, &cmd) < 0)
+            return;
         long serial = emcmot_push(in->client, &cmd);
         if (serial < 0)
             break;
@@ -216,9 +256,23 @@ static void do_messages(inject_t *in)
 
     while (emcmot_pop_error(in->client, text, sizeof text, &kind) == 1) {
         printf("message: ");
-        for (char *p = text; *p; p++)
-            fputs(*p == '\n' ? "\\n" : (char[]){ *p, 0 }, stdout);
-        printf("\n");
+        print_escaped(text);
+    }
+}
+
+/* "sh WORDS...": run a shell command (halcmd setp ...); its output goes to ours. */
+static void do_shell(inject_t *in, char **w, int n)
+{
+    char cmd[4096] = "";
+
+    for (int i = 1; i < n; i++) {
+        strncat(cmd, w[i], sizeof cmd - strlen(cmd) - 2);
+        strcat(cmd, " ");
+    }
+    fflush(stdout);
+    if (system(cmd) != 0) {
+        fprintf(stderr, "%s:%d: command failed: %s\n", in->file, in->line, cmd);
+        in->failed = 1;
     }
 }
 
@@ -242,6 +296,8 @@ static void run_line(inject_t *in, char **w, int n)
     } else if (!strcmp(w[0], "echo")) {
         for (int i = 1; i < n; i++)
             printf("%s%s", w[i], i + 1 < n ? " " : "\n");
+    } else if (!strcmp(w[0], "sh")) {
+        do_shell(in, w, n);
     } else if (!strcmp(w[0], "fill")) {
         do_fill(in, w, n);
     } else if (!strcmp(w[0], "sync")) {
@@ -252,7 +308,7 @@ static void run_line(inject_t *in, char **w, int n)
             push(in, &cmd);
     } else if (build_command(in, w, n, &cmd) == 0) {
         uint32_t serial = push(in, &cmd);
-        if (serial)
+        if (serial && !in->no_wait)
             wait_echo(in, serial, w[0]);
     }
     fflush(stdout);
@@ -286,40 +342,53 @@ static int attach(inject_t *in, int key)
     return rc;
 }
 
-int main(int argc, char **argv)
+/* Run every line of one script ("-" = standard input). */
+static void run_file(inject_t *in, const char *path)
 {
-    inject_t in = { NULL, 5.0, "-", 0, 0, 0 };
-    int key = EMCMOT_SHM_DEFAULT_KEY, opt;
     char line[4096], *w[MAX_WORDS];
     FILE *f = stdin;
 
-    while ((opt = getopt(argc, argv, "k:t:")) != -1) {
-        if (opt == 'k')
+    in->file = path;
+    in->line = 0;
+    if (strcmp(path, "-") != 0 && !(f = fopen(path, "r"))) {
+        fprintf(stderr, "motion-inject: %s: %s\n", path, strerror(errno));
+        in->failed = 1;
+        return;
+    }
+    while (fgets(line, sizeof line, f)) {
+        int n;
+        in->line++;
+        n = split(line, w);
+        if (n > 0)
+            run_line(in, w, n);
+    }
+    if (f != stdin)
+        fclose(f);
+}
+
+int main(int argc, char **argv)
+{
+    inject_t in = { NULL, 5.0, "-", 0, 0, 0, 0 };
+    int key = EMCMOT_SHM_DEFAULT_KEY, opt;
+
+    while ((opt = getopt(argc, argv, "nk:t:")) != -1) {
+        if (opt == 'n')
+            in.no_wait = 1;
+        else if (opt == 'k')
             key = atoi(optarg);
         else if (opt == 't')
             in.timeout_s = atof(optarg);
         else {
-            fprintf(stderr, "usage: motion-inject [-k SHMEM_KEY] [-t TIMEOUT_S] [SCRIPT]\n");
-            return 2;
-        }
-    }
-    if (optind < argc && strcmp(argv[optind], "-") != 0) {
-        in.file = argv[optind];
-        f = fopen(in.file, "r");
-        if (!f) {
-            fprintf(stderr, "motion-inject: %s: %s\n", in.file, strerror(errno));
+            fprintf(stderr, "usage: motion-inject [-n] [-k SHMEM_KEY] [-t TIMEOUT_S] [SCRIPT...]\n");
             return 2;
         }
     }
     if (attach(&in, key) < 0)
         return 1;
-    while (fgets(line, sizeof line, f)) {
-        int n;
-        in.line++;
-        n = split(line, w);
-        if (n > 0)
-            run_line(&in, w, n);
-    }
+    if (optind == argc)
+        run_file(&in, "-");
+    for (int i = optind; i < argc; i++)
+        run_file(&in, argv[i]);
     emcmot_detach(in.client);
     return in.failed ? 1 : 0;
 }

@@ -13,6 +13,14 @@ static const char *jog_name(jog_kind_t kind)
     return names[kind];
 }
 
+/* Direction a joint jog moves: the velocity's sign, or toward the target of an absolute jog. */
+static double jog_direction(const emcmot_command_t *c, jog_kind_t kind, double from)
+{
+    if (kind == JOG_ABS)
+        return c->offset - from;
+    return c->vel;
+}
+
 /* Refusals shared by joint jogs; the joint, or -1 after refusing. */
 static int joint_jog_refusals(const emcmot_command_t *c, jog_kind_t kind)
 {
@@ -33,10 +41,8 @@ static int joint_jog_refusals(const emcmot_command_t *c, jog_kind_t kind)
                    "Can't jog any joint while homing." : "Can't jog any joints while homing.");
         return -1;
     }
-    if (mot_joint_jog_refused(j, c->vel, 1)) {
-        mot_refuse(EMCMOT_COMMAND_INVALID_COMMAND, 0, "joint %d jog refused", j);
+    if (mot_joint_jog_refused(j, jog_direction(c, kind, mot->joint[j].pos_cmd), 1))
         return -1;
-    }
     return j;
 }
 
@@ -99,10 +105,8 @@ static int axis_jog_refusals(const emcmot_command_t *c, jog_kind_t kind)
                    c->axis);
         return -1;
     }
-    if (mot_axis_jog_refused(c->axis, 1)) {
-        mot_refuse(EMCMOT_COMMAND_INVALID_COMMAND, 0, "axis %d jog refused", c->axis);
+    if (mot_axis_jog_refused(c->axis, 1))
         return -1;
-    }
     return c->axis;
 }
 
@@ -162,20 +166,18 @@ int mot_cmd_jog_abs(const emcmot_command_t *c)
     return jog(c, JOG_ABS);
 }
 
-/* JOG_ABORT: decelerate a keyboard jog of the axis (teleop) or joint (free). */
+/* JOG_ABORT: decelerate a jog of the axis (teleop) or joint (free); it ends when stopped. */
 int mot_cmd_jog_abort(const emcmot_command_t *c)
 {
     if (mot->teleop && c->axis >= 0 && c->axis < MOT_NUM_AXES) {
         mot_axis_t *axis = &mot->axis[c->axis];
         axis->teleop_tp.enable = 0;
-        axis->kb_jog_active = 0;
         return EMCMOT_COMMAND_OK;
     }
     if (c->joint >= 0 && c->joint < mot->num_joints && !mot->home->joint_homing(c->joint)) {
         mot_joint_t *joint = &mot->joint[c->joint];
         if (joint->kb_jog_active || joint->wheel_jog_active)
             joint->free_tp.enable = 0;
-        joint->kb_jog_active = 0;
     }
     return EMCMOT_COMMAND_OK;
 }

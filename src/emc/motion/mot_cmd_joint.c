@@ -1,6 +1,7 @@
 /* mot_cmd_joint.c: per-joint commands: activation, homing requests, limits, backlash, screw compensation. */
 #include "rtapi.h"
 #include "mot_cmd.h"
+#include "mot_control.h"
 
 /* JOINT_ACTIVATE. */
 int mot_cmd_joint_activate(const emcmot_command_t *c)
@@ -53,6 +54,7 @@ int mot_cmd_joint_unhome(const emcmot_command_t *c)
     if (mot->enabled && (mot->coord || mot->teleop))
         return mot_refuse(EMCMOT_COMMAND_INVALID_COMMAND, 1,
                           "must be in joint mode or disabled to unhome");
+    mot_homing_inputs_update();
     if (mot->home->set_unhomed(c->joint, mot->enabled) < 0)
         return mot_refuse(EMCMOT_COMMAND_INVALID_COMMAND, 0, "homing module refused to unhome %d",
                           c->joint);

@@ -84,6 +84,15 @@ static const mot_cmd_fn_t handlers[EMCMOT_LAST_COMMAND + 1] = {
 /* Reason of the command being handled ("" when accepted). */
 static char reason[EMCMOT_REASON_LEN];
 static int reason_reported;
+static int handling;                            /* a command is being handled now */
+static char first_report[EMCMOT_REASON_LEN];    /* first operator message it caused */
+
+/* An operator message was queued; while a command runs, the first one is its likely reason. */
+void mot_command_reported(const char *text)
+{
+    if (handling && !first_report[0])
+        rtapi_snprintf(first_report, sizeof first_report, "%s", text);
+}
 
 /* Keep the reason, optionally queue it for the operator, return result. */
 int mot_refuse(int result, int report, const char *fmt, ...)
@@ -160,8 +169,9 @@ static void handle_one(const emcmot_command_t *cmd)
     const char *field = "";
     int result;
 
-    reason[0] = '\0';
+    reason[0] = first_report[0] = '\0';
     reason_reported = 0;
+    handling = 1;
     if (cmd->command < EMCMOT_FIRST_COMMAND || cmd->command > EMCMOT_LAST_COMMAND)
         result = mot_refuse(EMCMOT_COMMAND_UNKNOWN_COMMAND, 1, "unrecognized command %d",
                             cmd->command);
@@ -170,6 +180,11 @@ static void handle_one(const emcmot_command_t *cmd)
                             emcmot_command_name(cmd->command), field);
     else
         result = handlers[cmd->command](cmd);
+    handling = 0;
+    if (result != EMCMOT_COMMAND_OK && !reason_reported && first_report[0]) {
+        memcpy(reason, first_report, sizeof reason);
+        reason_reported = 1;
+    }
     mot->echo.serial = cmd->serial;
     mot->echo.command = cmd->command;
     mot->echo.result = result;

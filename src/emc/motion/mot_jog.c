@@ -1,7 +1,7 @@
 /* mot_jog.c: jog limits and refusals shared by keyboard and wheel jogs; jog wheels; jog-stop inputs. */
 #include "rtapi.h"
 #include "rtapi_math.h"
-#include "mot_priv.h"
+#include "mot_cmd.h"
 #include "mot_jog.h"
 
 /* Where joint j may jog: its limits once homed, else +-travel around the feedback. */
@@ -19,7 +19,7 @@ void mot_joint_jog_limits(int j, double *lo, double *hi)
     }
 }
 
-/* Report text when report is set; always returns 1 (refused). */
+/* Refuse the command being handled with text (reported) when report is set; returns 1. */
 static int refused(int report, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 static int refused(int report, const char *fmt, ...)
 {
@@ -31,7 +31,7 @@ static int refused(int report, const char *fmt, ...)
     va_start(ap, fmt);
     rtapi_vsnprintf(text, sizeof text, fmt, ap);
     va_end(ap);
-    mot_report("%s", text);
+    mot_refuse(EMCMOT_COMMAND_INVALID_COMMAND, 1, "%s", text);
     return 1;
 }
 
@@ -92,17 +92,16 @@ static int count_delta(int now, int *old, int *valid)
     return delta;
 }
 
-/* Wheel-jog target of one planner: position mode adds the distance; velocity mode
- * keeps the target within the stopping distance so motion ends when the wheel stops. */
-static double wheel_target(const simple_tp_t *tp, double distance, int vel_mode, double period)
+/* Wheel-jog target of one planner: position mode adds the distance; velocity mode keeps the
+ * target within the stopping distance at full speed, so motion ends soon after the wheel stops. */
+static double wheel_target(const simple_tp_t *tp, double distance, int vel_mode, double vmax,
+                           double amax)
 {
     double target = tp->pos_cmd + distance;
 
-    if (vel_mode) {
-        double reach = fabs(tp->curr_vel) * period + simple_tp_stop_distance(tp);
-        double stop_lo = tp->curr_pos - reach - fabs(distance);
-        double stop_hi = tp->curr_pos + reach + fabs(distance);
-        target = fmin(fmax(target, stop_lo), stop_hi);
+    if (vel_mode && amax > 0.0) {
+        double reach = vmax * vmax / (2.0 * amax);
+        target = fmin(fmax(target, tp->curr_pos - reach), tp->curr_pos + reach);
     }
     return target;
 }
@@ -123,10 +122,11 @@ void mot_jog_wheels_joints(void)
             mot_joint_jog_refused(j, distance, 0) || !isfinite(distance))
             continue;
         mot_joint_jog_limits(j, &lo, &hi);
-        target = wheel_target(&joint->free_tp, distance, *p->jog_vel_mode, mot->servo_period);
+        joint->wheel_accel_fraction = accel_fraction(*p->jog_accel_fraction);
+        target = wheel_target(&joint->free_tp, distance, *p->jog_vel_mode, joint->vel_limit,
+                              fmin(joint->acc_limit, mot->acc) * joint->wheel_accel_fraction);
         joint->free_tp.pos_cmd = fmin(fmax(target, lo), hi);
         joint->free_tp.max_vel = joint->vel_limit;
-        joint->wheel_accel_fraction = accel_fraction(*p->jog_accel_fraction);
         joint->free_tp.enable = 1;
         joint->wheel_jog_active = 1;
     }
@@ -147,10 +147,11 @@ void mot_jog_wheels_axes(void)
         if (*mot->pins->jog_inhibit || mot->on_soft_limit || axis->kb_jog_active ||
             !mot->enabled || !isfinite(distance))
             continue;
-        target = wheel_target(&axis->teleop_tp, distance, *p->jog_vel_mode, mot->servo_period);
+        axis->teleop_tp.max_acc = axis->acc_limit * accel_fraction(*p->jog_accel_fraction);
+        target = wheel_target(&axis->teleop_tp, distance, *p->jog_vel_mode, axis->vel_limit,
+                              axis->teleop_tp.max_acc);
         axis->teleop_tp.pos_cmd = fmin(fmax(target, axis->min_limit), axis->max_limit);
         axis->teleop_tp.max_vel = axis->vel_limit;
-        axis->teleop_tp.max_acc = axis->acc_limit * accel_fraction(*p->jog_accel_fraction);
         axis->teleop_tp.enable = 1;
         axis->wheel_jog_active = 1;
     }

@@ -263,6 +263,10 @@ extern mot_t *mot;
 /* Queue an operator message (no printing in the cycle). */
 void mot_report(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
 
+/* ---- mot_command.c ---- */
+/* Tell the command handler an operator message was queued (a refusal's reason). */
+void mot_command_reported(const char *text);
+
 /* ---- mot_pins.c ---- */
 struct mot_config;
 int mot_pins_create(const struct mot_config *cfg);

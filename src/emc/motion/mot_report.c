@@ -12,8 +12,10 @@ void mot_report(const char *fmt, ...)
     va_start(ap, fmt);
     rtapi_vsnprintf(text, sizeof text, fmt, ap);
     va_end(ap);
-    if (mot && mot->shm)
+    if (mot && mot->shm) {
         emcmot_error_push(mot->shm, EMCMOT_MSG_ERROR, text);
+        mot_command_reported(text);
+    }
     else
         rtapi_print_msg(RTAPI_MSG_ERR, "%s\n", text);
 }

@@ -87,7 +87,14 @@ static int map_segment(emcmot_client_t *c, char *why, size_t why_size)
     c->shm = mem;
     if (c->owner)
         return 0;
-    return emcmot_shm_check(c->shm, ds.shm_segsz, why, why_size);
+    if (emcmot_shm_check(c->shm, ds.shm_segsz, why, why_size) < 0)
+        return -EPROTO;
+    if (__atomic_load_n(&c->shm->header.owner_state, __ATOMIC_ACQUIRE) != EMCMOT_OWNER_RUNNING) {
+        snprintf(why, why_size, "motion shared memory (key 0x%08x) is left from a motion module "
+                 "that has exited", (unsigned)c->key);
+        return -ENOENT;
+    }
+    return 0;
 }
 
 /* Attach to an existing segment. */

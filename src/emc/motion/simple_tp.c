@@ -20,14 +20,18 @@ double simple_tp_stop_distance(const simple_tp_t *tp)
     return tp->curr_vel * tp->curr_vel / (2.0 * tp->max_acc);
 }
 
-/* Velocity that still stops exactly at distance d (signed) after this period:
- * v^2 = 2 a |d| corrected for the discrete period (v * dt per step). */
+/* Largest speed that still stops exactly at distance d (signed) in steps of
+ * pos += v * period with the speed falling by at most dv = acc * period per step:
+ * braking from v covers S(v) = period * sum_{k=0..n} (v - k dv), n = floor(v / dv);
+ * this inverts S, so a move decelerates by exactly dv per step and lands on the target. */
 static double braking_velocity(double d, double acc, double period)
 {
-    double dv = acc * period;
-    double mag = fabs(d);
-    double v = -0.5 * dv + sqrt(0.25 * dv * dv + 2.0 * acc * mag);
+    double dv = acc * period, dist = fabs(d), unit = period * dv, v, n;
 
+    if (dist <= 0.0)
+        return 0.0;
+    n = floor((-1.0 + sqrt(1.0 + 8.0 * dist / unit)) / 2.0);
+    v = (dist / period + dv * n * (n + 1.0) / 2.0) / (n + 1.0);
     return d < 0.0 ? -v : v;
 }
 
@@ -58,12 +62,8 @@ void simple_tp_update(simple_tp_t *tp, double period)
     vel = clamp(vel, -max_vel, max_vel);
     vel = clamp(vel, vel_old - dv, vel_old + dv);
     tp->curr_pos += vel * period;
-    if (tp->enable && d != 0.0 && (d > 0.0) != (tp->pos_cmd - tp->curr_pos > 0.0)
-        && fabs(d) <= dv * period) {
-        /* the last step: land on the target exactly */
-        tp->curr_pos = tp->pos_cmd;
-        vel = d / period;
-    }
+    if (tp->enable && fabs(tp->pos_cmd - tp->curr_pos) <= 1e-12 * fmax(1.0, fabs(tp->pos_cmd)))
+        tp->curr_pos = tp->pos_cmd;     /* rounding of the last step */
     tp->curr_vel = vel;
     tp->curr_acc = (vel - vel_old) / period;
     if (tp->enable)
