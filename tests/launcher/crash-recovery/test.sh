@@ -3,6 +3,7 @@
 # memory stay. The next launch in that instance finds the dead launcher in the instance lock,
 # stops what it left and starts normally.
 export PATH=$PATH:$(cd ../doubles && pwd)
+rm -f ./*.out ./*.err
 wait_for() {
     for i in $(seq 200); do grep -q "$2" "$1" 2> /dev/null && return 0; sleep 0.05; done
     echo "timeout waiting for '$2' in $1"; cat "$1"; return 1

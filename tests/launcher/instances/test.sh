@@ -4,6 +4,7 @@
 # and SIGINT stop a session completely (a task that ignores SIGTERM is killed); nothing is
 # left in either instance.
 export PATH=$PATH:$(cd ../doubles && pwd)
+rm -f ./*.out ./*.err
 
 # wait_for FILE TEXT: until FILE contains TEXT (at most 10 s)
 wait_for() {
