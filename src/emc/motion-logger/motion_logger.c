@@ -22,6 +22,20 @@ static void on_signal(int sig)
     stop_requested = 1;
 }
 
+/* Keep an unknown command in the echo's rejection history (as motmod does). */
+static void reject(emcmot_status_t *st, const emcmot_command_t *cmd)
+{
+    emcmot_reject_t *r = &st->echo.reject[st->echo.reject_next % EMCMOT_REJECT_HISTORY];
+
+    r->serial = cmd->serial;
+    r->command = cmd->command;
+    r->result = EMCMOT_COMMAND_UNKNOWN_COMMAND;
+    r->reported = 0;
+    snprintf(r->reason, sizeof r->reason, "unrecognized command %d", cmd->command);
+    st->echo.reject_next = (st->echo.reject_next + 1) % EMCMOT_REJECT_HISTORY;
+    st->echo.rejected++;
+}
+
 /* Log, apply and echo every queued command. */
 static void drain(emcmot_shm_t *shm, FILE *log, emcmot_status_t *st)
 {
@@ -34,8 +48,11 @@ static void drain(emcmot_shm_t *shm, FILE *log, emcmot_status_t *st)
         ml_state_apply(st, &cmd);
         st->echo.serial = cmd.serial;
         st->echo.command = cmd.command;
-        st->echo.result = EMCMOT_COMMAND_OK;
+        st->echo.result = emcmot_command_name(cmd.command) ? EMCMOT_COMMAND_OK
+                                                           : EMCMOT_COMMAND_UNKNOWN_COMMAND;
         st->echo.handled++;
+        if (st->echo.result != EMCMOT_COMMAND_OK)
+            reject(st, &cmd);
     }
 }
 

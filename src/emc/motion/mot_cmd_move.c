@@ -61,7 +61,7 @@ static int check_axis_limits(const emcmot_command_t *c, const move_kind_t *kind)
 /* Joint limits of the end point through inverse kinematics; 0 or -1 after reporting. */
 static int check_joint_limits(const emcmot_command_t *c, const move_kind_t *kind)
 {
-    double joints[MOT_MAX_JOINTS];
+    double joints[MOT_MAX_JOINTS] = { 0 };
 
     for (int j = 0; j < mot->num_joints; j++)
         joints[j] = mot->joint[j].pos_cmd;

@@ -62,10 +62,10 @@ void mot_controller(void *arg, long period_ns)
     }
     do_homing();                                /* 9. homing */
     apply_pending_planner_type();               /* 10. deferred planner type */
-    mot_get_pos_cmds();                         /* 11. commanded positions */
+    mot_external_offsets();                     /* 13. external offsets (planned first so */
+    mot_get_pos_cmds();                         /* 11. the pose of this cycle includes them) */
     mot_check_soft_limits();
     mot_compensate();                           /* 12. backlash and screw comp */
-    mot_external_offsets();                     /* 13. external offsets */
     mot_output();                               /* 14. outputs */
     mot->home->write_outputs();                 /* 15. homing output pins */
     mot->heartbeat++;                           /* 16. status */

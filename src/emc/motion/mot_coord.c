@@ -118,7 +118,7 @@ static int planner_cycle(double *joints)
 /* Coordinated mode: a planner point every trajectory period, cubic samples in between. */
 void mot_coord_cmds(void)
 {
-    double joints[MOT_MAX_JOINTS];
+    double joints[MOT_MAX_JOINTS] = { 0 };
 
     if (mot->interp_rate <= 1) {
         if (planner_cycle(joints) == 0)

@@ -11,7 +11,8 @@ void mot_eoffset_apply(EmcPose *pos)
         mot_pose_set(pos, a, mot_pose_get(pos, a) + mot->axis[a].ext_offset_tp.curr_pos);
 }
 
-/* New request of one axis from its counts, clear input and the axis limits. */
+/* Request of one axis: counts x scale accumulated (cleared by eoffset-clear), kept inside the
+ * axis limits; *limited is set while the limits cut it. */
 static double axis_request(int a, int *limited)
 {
     mot_axis_t *axis = &mot->axis[a];
@@ -19,21 +20,17 @@ static double axis_request(int a, int *limited)
     int counts = *p->eoffset_counts;
     int delta = axis->eoffset_counts_valid ? counts - axis->eoffset_counts_old : 0;
     double base = mot_pose_get(&mot->carte_pos_cmd, a) - axis->ext_offset_tp.curr_pos;
-    double request = axis->eoffset_request;
+    double request;
 
     axis->eoffset_counts_old = counts;
     axis->eoffset_counts_valid = 1;
     if (*p->eoffset_clear)
-        request = 0.0;
+        axis->eoffset_raw = 0.0;
     else if (*p->eoffset_enable && delta != 0 && isfinite(*p->eoffset_scale))
-        request += delta * *p->eoffset_scale;
-    if (base + request > axis->max_limit) {
-        request = axis->max_limit - base;
+        axis->eoffset_raw += delta * *p->eoffset_scale;
+    request = fmin(fmax(axis->eoffset_raw, axis->min_limit - base), axis->max_limit - base);
+    if (request != axis->eoffset_raw)
         *limited = 1;
-    } else if (base + request < axis->min_limit) {
-        request = axis->min_limit - base;
-        *limited = 1;
-    }
     axis->eoffset_request = request;
     return request;
 }

@@ -87,7 +87,7 @@ static int forward_usable(void)
 /* 4. The feedback pose (IDENTITY always, others only when every joint is homed). */
 void mot_forward_kins_feedback(void)
 {
-    double joints[MOT_MAX_JOINTS];
+    double joints[MOT_MAX_JOINTS] = { 0 };
 
     mot->carte_pos_fb_old = mot->carte_pos_fb;
     mot->carte_pos_fb_ok = 0;
@@ -101,7 +101,7 @@ void mot_forward_kins_feedback(void)
 /* The commanded pose from the joint commands (free mode, mode changes). */
 void mot_forward_kins_cmd(void)
 {
-    double joints[MOT_MAX_JOINTS];
+    double joints[MOT_MAX_JOINTS] = { 0 };
 
     if (!forward_usable())
         return;

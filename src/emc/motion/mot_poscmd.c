@@ -75,7 +75,7 @@ static void free_cmds(void)
 /* Teleop: per-axis planners, external offsets, inverse kinematics. */
 static void teleop_cmds(void)
 {
-    double joints[MOT_MAX_JOINTS];
+    double joints[MOT_MAX_JOINTS] = { 0 };
     EmcPose pos;
 
     for (int a = 0; a < MOT_NUM_AXES; a++) {

@@ -124,7 +124,8 @@ typedef struct mot_axis {
     int jog_counts_old, jog_counts_valid;
     int eoffset_counts_old, eoffset_counts_valid;
     double pos_cmd;             /* axis position including external offset */
-    double eoffset_request;     /* external offset asked for (counts x scale, limited) */
+    double eoffset_raw;         /* external offset asked for: counts x scale */
+    double eoffset_request;     /* the same kept inside the axis limits */
 } mot_axis_t;
 
 typedef struct mot_spindle {

@@ -1,17 +1,7 @@
-/* tp_ops_check.c: refuse a planner ops table built for another interface version. */
+/* tp_ops_check.c: refuse a planner ops table built for another interface version or with holes. */
 #include <errno.h>
 #include <stdio.h>
 #include "tp_ops.h"
-
-/* Non-zero when any entry of the table is empty. */
-static int has_empty_entry(const tp_ops_t *o)
-{
-    return !o->create || !o->destroy || !o->set_limits || !o->set_term_cond ||
-        !o->set_planner_type || !o->set_pos || !o->set_spindle_sync || !o->set_dout ||
-        !o->set_aout || !o->set_run_dir || !o->add || !o->clear || !o->pause || !o->resume ||
-        !o->abort || !o->run_cycle || !o->is_done || !o->queue_depth || !o->queue_full ||
-        !o->get_pos || !o->planner_type;
-}
 
 /* 0 when motion can use the table; else a negative errno and the reason. */
 int tp_ops_check(const tp_ops_t *ops, char *why, size_t why_size)
@@ -20,14 +10,18 @@ int tp_ops_check(const tp_ops_t *ops, char *why, size_t why_size)
         snprintf(why, why_size, "module exports no tp_ops table");
         return -EINVAL;
     }
+    const char *name = ops->name ? ops->name : "?";
     if (ops->version != TP_OPS_VERSION || ops->size != sizeof(tp_ops_t)) {
         snprintf(why, why_size, "%s: tp_ops version %u (size %u), motion needs version %u (size %zu)",
-                 ops->name ? ops->name : "?", ops->version, ops->size, TP_OPS_VERSION,
-                 sizeof(tp_ops_t));
+                 name, ops->version, ops->size, TP_OPS_VERSION, sizeof(tp_ops_t));
         return -EPROTO;
     }
-    if (has_empty_entry(ops)) {
-        snprintf(why, why_size, "%s: tp_ops table has an empty entry", ops->name ? ops->name : "?");
+    if (!ops->create || !ops->destroy || !ops->set_limits || !ops->set_term_cond ||
+        !ops->set_planner_type || !ops->set_pos || !ops->set_spindle_sync || !ops->set_dout ||
+        !ops->set_aout || !ops->set_run_dir || !ops->add || !ops->clear || !ops->pause ||
+        !ops->resume || !ops->abort || !ops->run_cycle || !ops->is_done || !ops->queue_depth ||
+        !ops->queue_full || !ops->get_pos || !ops->planner_type) {
+        snprintf(why, why_size, "%s: tp_ops table has an empty entry", name);
         return -EINVAL;
     }
     return 0;
