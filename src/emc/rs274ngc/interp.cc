@@ -71,10 +71,11 @@ void Interp::init()
     s_.origin_index = index;
     s_.params[5220] = index;
     double k = s_.machine_to_program();
+    bool apply = s_.params[5210] != 0.0 && !s_.settings.disable_g92_persistence;
     for (int i = 0; i < AX_COUNT; i++) {
-        s_.origin_offset[i] = s_.params[5201 + 20 * index + i] * k;
-        bool apply = s_.params[5210] == 1.0 && !s_.settings.disable_g92_persistence;
-        s_.axis_offset[i] = apply ? s_.params[5211 + i] * k : 0.0;
+        double scale = (i >= AX_A && i <= AX_C) ? 1.0 : k;
+        s_.origin_offset[i] = s_.params[5201 + 20 * index + i] * scale;
+        s_.axis_offset[i] = apply ? s_.params[5211 + i] * scale : 0.0;
     }
     s_.rotation_xy = s_.params[5210 + 20 * index];
     emit_g5x();

@@ -255,7 +255,13 @@ private:
     // offsets and tools (offsets.cc, tools.cc, modal_save.cc)
     void g10(const Block &b);
     void g10_l2(const Block &b, int l);
+    double axis_word(const Block &b, int i) const;
+    Pose offsets_for_point(const Block &b, Pose q, const Pose &shift, Pose old, double rot) const;
     void g10_tool(const Block &b, int l);
+    void g10_reload_tools();
+    Pose tool_pose(const CanonTool &t) const;
+    Pose g10_tool_offsets(const Block &b, int l, const CanonTool &t) const;
+    void store_tool_entry(int index, const CanonTool &t);
     void set_origin_index(int index);
     void emit_g5x();
     void emit_g92();

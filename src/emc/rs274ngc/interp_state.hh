@@ -3,6 +3,7 @@
 #define OPENEMC_RS274NGC_INTERP_STATE_HH
 
 #include <array>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -35,6 +36,16 @@ inline int clamp_int(double v)
     if (v > 1e9) return 1000000000;
     if (v < -1e9) return -1000000000;
     return (int)(v < 0 ? v - 0.5 : v + 0.5);
+}
+
+// Rotate (x, y) counterclockwise by deg degrees about the origin (no change for 0).
+inline void rotate_xy(double &x, double &y, double deg)
+{
+    if (deg == 0.0) return;
+    double t = deg * M_PI / 180.0, c = std::cos(t), s = std::sin(t);
+    double rx = x * c - y * s, ry = x * s + y * c;
+    x = rx;
+    y = ry;
 }
 
 // The canon form of a nine-axis pose (X Y Z A B C U V W), used by every emitter of moves.

@@ -154,8 +154,9 @@ void Interp::do_tool_length(Block &b)
 void Interp::apply_tlo(const Pose &tlo)
 {
     INTERP_FRAME();
-    for (int i = 0; i < AX_COUNT; i++) s_.current[i] += s_.tool_offset[i] - tlo[i];
+    Pose m = program_to_machine_pose(s_.current);
     s_.tool_offset = tlo;
+    s_.current = machine_to_program_pose(m);
     out().use_tool_length_offset(to_canon_pose(tlo));
     double k = 1.0 / s_.machine_to_program();
     for (int i = 0; i < AX_COUNT; i++)

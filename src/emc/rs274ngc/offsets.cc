@@ -146,22 +146,48 @@ void Interp::g10_l2(const Block &b, int l)
     int index = p == 0 ? s_.origin_index : p;
     double k = s_.machine_to_program();
     Pose m = program_to_machine_pose(s_.current);
-    for (int i = 0; i < 6; i++) {
-        if (!b.word(AXES[i])) continue;
-        double v = b.value(AXES[i]);
-        if (i == AX_X && s_.lathe_diameter) v /= 2.0;
-        if (l == 20) v = m[i] - s_.tool_offset[i] - s_.axis_offset[i] - v;
-        s_.params[5201 + 20 * index + i] = v / (rotary(i) ? 1.0 : k);
-    }
+    Pose offs;
+    for (int i = 0; i < AX_COUNT; i++)
+        offs[i] = s_.params[5201 + 20 * index + i] * (rotary(i) ? 1.0 : k);
     if (b.word('r')) s_.params[5210 + 20 * index] = b.value('r');
+    double rot = s_.params[5210 + 20 * index];
+    if (l == 20) {
+        Pose q;
+        for (int i = 0; i < AX_COUNT; i++) q[i] = m[i] - s_.tool_offset[i];
+        offs = offsets_for_point(b, q, s_.axis_offset, offs, rot);
+    } else {
+        for (int i = 0; i < 6; i++)
+            if (b.word(AXES[i])) offs[i] = axis_word(b, i);
+    }
+    for (int i = 0; i < AX_COUNT; i++)
+        s_.params[5201 + 20 * index + i] = offs[i] / (rotary(i) ? 1.0 : k);
     if (index != s_.origin_index) {
         out().comment("interpreter: setting coordinate system origin");
         return;
     }
-    for (int i = 0; i < AX_COUNT; i++)
-        s_.origin_offset[i] = s_.params[5201 + 20 * index + i] * (rotary(i) ? 1.0 : k);
-    s_.rotation_xy = s_.params[5210 + 20 * index];
+    s_.origin_offset = offs;
+    s_.rotation_xy = rot;
     s_.current = machine_to_program_pose(m);
     emit_g5x();
     out().set_xy_rotation(s_.rotation_xy);
+}
+
+// Value of axis word i of a block (X halved in lathe diameter mode).
+double Interp::axis_word(const Block &b, int i) const
+{
+    double v = b.value(AXES[i]);
+    return (i == AX_X && s_.lathe_diameter) ? v / 2.0 : v;
+}
+
+// G10 L10/L11/L20 arithmetic: the offset (machine frame, program units) that makes point q
+// (machine frame, relative to that offset) read the block's axis values in a frame rotated by
+// rot and shifted by shift; axes without a word keep the coordinate `old` gives them.
+Pose Interp::offsets_for_point(const Block &b, Pose q, const Pose &shift, Pose old, double rot) const
+{
+    rotate_xy(q[AX_X], q[AX_Y], -rot);
+    rotate_xy(old[AX_X], old[AX_Y], -rot);
+    for (int i = 0; i < 6; i++)
+        if (b.word(AXES[i])) old[i] = q[i] - shift[i] - axis_word(b, i);
+    rotate_xy(old[AX_X], old[AX_Y], rot);
+    return old;
 }
