@@ -118,12 +118,19 @@ std::shared_ptr<SourceFile> Interp::make_source(const std::string &path, const s
         f->lines.emplace_back(text, start, end - start);
         start = nl + 1;
     }
-    for (const std::string &l : f->lines) {
-        if (l.find_first_not_of(" \t") == std::string::npos) continue;
-        f->percent = is_percent(l);
+    for (size_t i = 0; i < f->lines.size(); i++) {
+        if (f->lines[i].find_first_not_of(" \t") == std::string::npos) continue;
+        f->percent = is_percent(f->lines[i]);
+        f->percent_line = i;
         break;
     }
     return f;
+}
+
+// True when line i is the '%' that ends a percent-delimited program.
+bool SourceFile::closes(size_t i) const
+{
+    return percent && i != percent_line && i < lines.size() && is_percent(lines[i]);
 }
 
 // Open the main program.
@@ -195,12 +202,12 @@ InterpStatus Interp::execute_next()
     }
     s_.sequence_number = (int)f.pos + 1;
     const std::string &line = f.file->lines[f.pos++];
-    if (is_percent(line) && f.file->percent && !skipping_) {
-        bool first = true;
-        for (size_t i = 0; i + 1 < f.pos; i++)
-            if (f.file->lines[i].find_first_not_of(" \t") != std::string::npos) first = false;
+    if (f.file->percent && f.pos - 1 == f.file->percent_line) {
         s_.line_text = line;
-        if (first) return INTERP_OK;
+        return INTERP_OK;
+    }
+    if (f.file->closes(f.pos - 1) && !skipping_) {
+        s_.line_text = line;
         out().finish();
         return INTERP_EXIT;
     }
@@ -225,10 +232,6 @@ InterpStatus Interp::run_line(const std::string &raw)
     interp_error_unwinding = false;
     try {
         if (line_budget_ >= 0 && line_budget_-- == 0) throw InterpError("Line budget exhausted");
-        if (skipping_ && skip_fanuc_) {
-            fanuc_skip_done(raw);
-            return INTERP_OK;
-        }
         if (skipping_) {
             std::string name;
             OKind kind;
@@ -243,7 +246,8 @@ InterpStatus Interp::run_line(const std::string &raw)
     } catch (const InterpError &e) {
         interp_error_unwinding = false;
         error_ = e.what();
-        error_line_ = raw;
+        auto at = dynamic_cast<const InterpErrorAt *>(&e);
+        error_line_ = at ? at->line() : raw;
         unwind_after_error();
         return INTERP_ERROR;
     }

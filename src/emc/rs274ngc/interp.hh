@@ -27,7 +27,13 @@ struct SourceFile {
     std::string path;
     std::vector<std::string> lines;
     bool percent = false;          // first non-blank line is a lone '%'
+    size_t percent_line = 0;       // index of that opening '%' line
+    // true when line i is the '%' that ends a percent-delimited program
+    bool closes(size_t i) const;
 };
+
+// What a forward search for a subroutine definition met first.
+enum class SubScan { SUB, FANUC, PERCENT, END };
 
 // An active loop or conditional of the current call level.
 struct FlowFrame {
@@ -45,6 +51,12 @@ struct RemapDef {
     std::string argspec;           // letters: upper = required, lower = optional, '@' positional
     std::string ngc;               // subroutine name
 };
+
+// "<name>" for a named O-word label, the number for a numbered one.
+std::string label_text(const std::string &name);
+
+// Fanuc label "O<n>" of a bare program-number line ("" when the line is not one).
+std::string fanuc_label_name(const std::string &line);
 
 // One subroutine call level.
 struct CallFrame {
@@ -68,7 +80,8 @@ struct CallFrame {
 // Location of a known subroutine.
 struct SubDef {
     std::shared_ptr<SourceFile> file;
-    size_t line = 0;               // index of the "sub" line
+    size_t line = 0;               // index of the "sub" (or bare Fanuc "O<n>") line
+    bool fanuc = false;            // Fanuc-style "O<n>" ... "M99" program
 };
 
 // The interpreter.
@@ -173,7 +186,12 @@ private:
     void skip_to(const std::string &name, std::initializer_list<OKind> kinds, bool past);
     bool skip_match(const std::string &name, OKind kind);
     bool peek_oword(const std::string &line, std::string &name, OKind &kind);
-    bool find_sub(const std::string &name, SubDef &def);
+    bool find_sub(const std::string &name, SubDef &def, bool fanuc);
+    bool find_sub_file(const std::string &name, SubDef &def);
+    bool lookup_sub(const std::string &name, SubDef &def);
+    SubScan scan_for_sub(const SourceFile &f, size_t from, const std::string &name, size_t &line);
+    void check_sub_style(const SubDef &def, bool fanuc) const;
+    [[noreturn]] void sub_not_found(const std::string &name, bool fanuc);
     std::shared_ptr<SourceFile> load_file(const std::string &path);
     std::shared_ptr<SourceFile> make_source(const std::string &path, const std::string &text);
     void open_source(const std::shared_ptr<SourceFile> &f);
@@ -181,7 +199,6 @@ private:
                    bool fanuc);
     void pop_call();
     InterpStatus fanuc_label(Block &b);
-    bool fanuc_skip_done(const std::string &line);
     void fanuc_call(Block &b);
     bool fanuc_return();
     std::string flow_error(const std::string &what, const Block &b) const;
@@ -301,7 +318,7 @@ private:
     bool skipping_ = false;
     std::string skip_name_;
     std::vector<OKind> skip_kinds_;
-    bool skip_past_ = false, skip_sub_ = false, skip_fanuc_ = false;
+    bool skip_past_ = false, skip_sub_ = false;
     int skip_start_ = 0;
     bool block_delete_ = false;
     bool task_ = false;

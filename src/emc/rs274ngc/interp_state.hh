@@ -29,6 +29,18 @@ public:
     }
 };
 
+// An error detected on another line than the one being executed (a forward search):
+// the report names that line.
+class InterpErrorAt : public InterpError {
+public:
+    InterpErrorAt(const std::string &msg, const std::string &line) : InterpError(msg), line_(line) {}
+    // the source line the error is about
+    const std::string &line() const { return line_; }
+
+private:
+    std::string line_;
+};
+
 // Round a user-supplied value to an int, clamped to +-1e9 (NaN -> 0), so casts never overflow.
 inline int clamp_int(double v)
 {

@@ -126,7 +126,13 @@ void Interp::o_sub(Block &b)
     INTERP_FRAME();
     CallFrame &f = calls_.back();
     if (f.sub_name == b.o_name && f.pos - 1 == f.sub_line) return;
-    subs_[b.o_name] = SubDef{f.file, f.pos - 1};
+    if (calls_.size() > 1) throw InterpError("Nested subroutine definition");
+    auto it = subs_.find(b.o_name);
+    if (it != subs_.end() && (it->second.file != f.file || it->second.line != f.pos - 1))
+        throw InterpError("Subroutine o" + label_text(b.o_name) + " is already defined (" +
+                          it->second.file->path + " line " +
+                          std::to_string(it->second.line + 1) + ")");
+    subs_[b.o_name] = SubDef{f.file, f.pos - 1, false};
     skip_to(b.o_name, {O_ENDSUB}, true);
     skip_sub_ = true;
 }
@@ -136,7 +142,8 @@ void Interp::o_return(Block &b)
 {
     INTERP_FRAME();
     CallFrame &f = calls_.back();
-    if (calls_.size() < 2 || f.fanuc || (b.o_kind == O_ENDSUB && f.sub_name != b.o_name))
+    if (f.fanuc) throw InterpError("Fanuc 'O....' subroutine definition must end with 'M99'");
+    if (calls_.size() < 2 || (b.o_kind == O_ENDSUB && f.sub_name != b.o_name))
         return flow_fail("not in a subroutine definition", b);
     if (f.autorestore && f.saved.valid) modal_restore(f.saved);
     pop_call();
@@ -149,43 +156,116 @@ void Interp::o_call(Block &b)
 {
     INTERP_FRAME();
     SubDef def;
-    if (!find_sub(b.o_name, def)) {
-        std::string label = isdigit((unsigned char)b.o_name[0]) ? b.o_name : "<" + b.o_name + ">";
-        throw InterpError("EOF in file:" + calls_.back().file->path + " seeking o-word: o" +
-                          label + " from line: " + std::to_string(s_.sequence_number));
-    }
+    if (!find_sub(b.o_name, def, false)) sub_not_found(b.o_name, false);
     push_call(def, b.o_name, b.o_args, false);
 }
 
-// Locate a subroutine: known, later in the current file, or in a file on the search path.
-bool Interp::find_sub(const std::string &name, SubDef &def)
+// A subroutine a remap or a lathe cycle names: known, in its own file, or anywhere in the
+// main program (no side effects).
+bool Interp::lookup_sub(const std::string &name, SubDef &def)
 {
     INTERP_FRAME();
     auto it = subs_.find(name);
-    if (it != subs_.end()) { def = it->second; return true; }
-    CallFrame &f = calls_.back();
+    if (it != subs_.end() && !it->second.fanuc) {
+        def = it->second;
+        return true;
+    }
+    if (find_sub_file(name, def)) return true;
+    const auto &main = calls_[0].file;
+    size_t line;
+    if (!main || scan_for_sub(*main, 0, name, line) != SubScan::SUB) return false;
+    def = SubDef{main, line, false};
+    return true;
+}
+
+// "<name>" for named labels, the number for numbered ones.
+std::string label_text(const std::string &name)
+{
+    return isdigit((unsigned char)name[0]) ? name : "<" + name + ">";
+}
+
+// The error for a call whose subroutine exists nowhere.
+void Interp::sub_not_found(const std::string &name, bool)
+{
+    INTERP_FRAME();
+    throw InterpError("EOF in file:" + calls_.back().file->path + " seeking o-word: o" +
+                      label_text(name) + " from line: " + std::to_string(s_.sequence_number));
+}
+
+// Scan f from line `from` for the definition of `name` ("o<name> sub" or a bare Fanuc
+// "O<n>"), stopping at the '%' that closes the program.
+SubScan Interp::scan_for_sub(const SourceFile &f, size_t from, const std::string &name,
+                             size_t &line)
+{
+    INTERP_FRAME();
     std::string n;
     OKind k;
-    for (size_t i = f.pos; i < f.file->lines.size(); i++) {
-        if (peek_oword(f.file->lines[i], n, k) && k == O_SUB && n == name) {
-            def = SubDef{f.file, i};
-            subs_[name] = def;
-            return true;
-        }
+    for (line = from; line < f.lines.size(); line++) {
+        if (f.closes(line)) return SubScan::PERCENT;
+        if (peek_oword(f.lines[line], n, k) && k == O_SUB && n == name) return SubScan::SUB;
+        if (fanuc_label_name(f.lines[line]) == name) return SubScan::FANUC;
     }
+    return SubScan::END;
+}
+
+// A call of one style must not reach a definition of the other.
+void Interp::check_sub_style(const SubDef &def, bool fanuc) const
+{
+    INTERP_FRAME();
+    if (def.fanuc == fanuc) return;
+    const std::string &line = def.file->lines[def.line];
+    if (fanuc)
+        throw InterpErrorAt("'O.... sub' subroutine must be called with 'O.... call'", line);
+    throw InterpErrorAt("Fanuc 'O....' subroutine must be called with 'M98'", line);
+}
+
+// Locate a subroutine: known, later in the current file (top level only), or in a file on the
+// search path. A search that reaches the closing '%' ends the program there (FINISH).
+bool Interp::find_sub(const std::string &name, SubDef &def, bool fanuc)
+{
+    INTERP_FRAME();
+    auto it = subs_.find(name);
+    if (it != subs_.end()) {
+        def = it->second;
+        check_sub_style(def, fanuc);
+        return true;
+    }
+    CallFrame &f = calls_.back();
+    if (calls_.size() > 1 && !fanuc) return find_sub_file(name, def);
+    size_t line;
+    SubScan hit = scan_for_sub(*f.file, f.pos, name, line);
+    if (hit == SubScan::PERCENT) {
+        out().finish();
+        throw InterpErrorAt("EOF in file:" + f.file->path + " seeking o-word: o" +
+                            label_text(name) + " from line: " +
+                            std::to_string(s_.sequence_number), f.file->lines[line]);
+    }
+    if (hit == SubScan::END) return !fanuc && find_sub_file(name, def);
+    def = SubDef{f.file, line, hit == SubScan::FANUC};
+    check_sub_style(def, fanuc);
+    subs_[name] = def;
+    return true;
+}
+
+// A subroutine in its own file <name>.ngc on PROGRAM_PREFIX, SUBROUTINE_PATH, WIZARD_ROOT or
+// beside the main program.
+bool Interp::find_sub_file(const std::string &name, SubDef &def)
+{
+    INTERP_FRAME();
     std::vector<std::string> dirs;
     if (!s_.settings.program_prefix.empty()) dirs.push_back(s_.settings.program_prefix);
     for (const std::string &d : s_.settings.subroutine_path) dirs.push_back(d);
     if (!s_.settings.wizard_root.empty()) dirs.push_back(s_.settings.wizard_root);
+    const std::string &main = calls_[0].file ? calls_[0].file->path : std::string();
+    size_t slash = main.rfind('/');
+    dirs.push_back(slash == std::string::npos ? "." : main.substr(0, slash));
     for (const std::string &d : dirs) {
-        auto file = load_file(d + "/" + name + ".ngc");
+        auto file = load_file((d.empty() ? std::string(".") : d) + "/" + name + ".ngc");
         if (!file) continue;
-        for (size_t i = 0; i < file->lines.size(); i++) {
-            if (peek_oword(file->lines[i], n, k) && k == O_SUB && n == name) {
-                def = SubDef{file, i};
-                return true;
-            }
-        }
+        size_t line;
+        if (scan_for_sub(*file, 0, name, line) != SubScan::SUB) continue;
+        def = SubDef{file, line, false};
+        return true;
     }
     return false;
 }

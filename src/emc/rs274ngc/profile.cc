@@ -6,7 +6,7 @@ std::vector<Block> Interp::sub_blocks(const std::string &name)
 {
     INTERP_FRAME();
     SubDef def;
-    if (!find_sub(name, def))
+    if (!lookup_sub(name, def))
         throw InterpError("Unable to find profile subroutine o" + name);
     std::vector<Block> blocks;
     std::string n;

@@ -82,7 +82,7 @@ bool Interp::run_remap(Block &b)
     }
     if (!def) return false;
     SubDef sub;
-    if (!find_sub(def->ngc, sub))
+    if (!lookup_sub(def->ngc, sub))
         throw InterpError("Remap procedure " + def->ngc + " for " + code + " not found");
     bool positional = def->argspec.find('@') != std::string::npos;
     std::vector<double> args;
