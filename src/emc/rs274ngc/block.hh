@@ -46,8 +46,8 @@ struct Block {
     bool o_fanuc = false;       // "O100" without keyword: Fanuc program/sub number
     bool m98 = false;           // M98 Fanuc-style call
     bool block_delete = false;  // line starts with '/'
-    int remap_g = -1;           // remapped G code ×10 on this line (REMAP=)
-    int remap_m = -1;           // remapped M code on this line
+    bool execute_finish = false; // a step asked for execute-finish (probe, tool change)
+    int status = 0;             // InterpStatus a step ended the block with (0 = OK)
 
     Block() { for (int &g : g_modes) g = -1; for (int &m : m_modes) m = -1; }
     // true when letter word c ('a'..'z') is present

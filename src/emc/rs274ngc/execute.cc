@@ -20,6 +20,31 @@ bool g0_uses_axes(int g)
 
 } // namespace
 
+// One step of the execution order (gcode.md §3); `m_group` names the M group a remapped
+// M code of the block runs at instead of the built-in step (-1: no M group).
+struct ExecStep {
+    void (Interp::*run)(Block &);
+    int m_group;
+};
+
+// The execution order of gcode.md §3, steps 3 to 29.
+const ExecStep EXEC_STEPS[] = {
+    {&Interp::step_comment, -1},     {&Interp::do_spindle_mode, -1},
+    {&Interp::do_feed_mode, -1},     {&Interp::do_feed_rate, -1},
+    {&Interp::do_speed, -1},         {&Interp::do_select_tool, -1},
+    {&Interp::do_io, MG_IO},         {&Interp::step_tool_change, MG_TOOL},
+    {&Interp::do_spindle, MG_SPINDLE}, {&Interp::do_coolant, MG_COOLANT},
+    {&Interp::do_overrides, MG_OVERRIDE}, {&Interp::do_user_m, MG_USER},
+    {&Interp::do_dwell, -1},         {&Interp::do_plane, -1},
+    {&Interp::do_units, -1},         {&Interp::do_lathe_mode, -1},
+    {&Interp::do_comp, -1},          {&Interp::do_tool_length, -1},
+    {&Interp::do_coord_system, -1},  {&Interp::do_path_control, -1},
+    {&Interp::do_distance, -1},      {&Interp::do_retract, -1},
+    {&Interp::do_nonmodal, -1},      {&Interp::do_g92_family, -1},
+    {&Interp::step_motion, -1},      {&Interp::step_stop, -1},
+};
+constexpr size_t EXEC_STEP_COUNT = sizeof EXEC_STEPS / sizeof EXEC_STEPS[0];
+
 // Execute a parsed block.
 InterpStatus Interp::execute_block(Block &b)
 {
@@ -28,37 +53,57 @@ InterpStatus Interp::execute_block(Block &b)
     for (auto &a : b.named_assign) set_named(a.first, a.second);
     if (b.o_kind != O_NONE) return execute_oword(b);
     if (b.o_fanuc) return fanuc_label(b);
+    check_remap_args(b);
     check_block(b);
     if (b.m98) { fanuc_call(b); return INTERP_OK; }
+    return execute_steps(b, 0);
+}
+
+// Run the block's steps from `first` on; a remapped code suspends the block at its step
+// (the rest runs when its procedure returns).
+InterpStatus Interp::execute_steps(Block &b, size_t first)
+{
+    INTERP_FRAME();
+    for (size_t i = first; i < EXEC_STEP_COUNT; i++) {
+        const ExecStep &st = EXEC_STEPS[i];
+        int m = st.m_group >= 0 ? b.m_modes[st.m_group] : -1;
+        if (m != -1 && m_remaps_.count(m)) {
+            start_remap(b, m_remaps_.at(m), "M" + std::to_string(m), i + 1);
+            return INTERP_OK;
+        }
+        if (st.run == &Interp::step_motion && remapped_motion(b)) {
+            int g = b.motion() != -1 ? b.motion() : s_.motion_mode;
+            start_remap(b, g_remaps_.at(g), g_code_text(g), i + 1);
+            return INTERP_OK;
+        }
+        (this->*st.run)(b);
+        if (b.status != INTERP_OK) return (InterpStatus)b.status;
+    }
+    return b.execute_finish ? INTERP_EXECUTE_FINISH : INTERP_OK;
+}
+
+// Step 3: the comment or active comment.
+void Interp::step_comment(Block &b)
+{
     if (b.has_comment) do_comment(b);
-    do_spindle_mode(b);
-    do_feed_mode(b);
-    do_feed_rate(b);
-    do_speed(b);
-    do_select_tool(b);
-    do_io(b);
-    bool finish = do_tool_change(b);
-    do_spindle(b);
-    do_coolant(b);
-    do_overrides(b);
-    do_user_m(b);
-    do_dwell(b);
-    do_plane(b);
-    do_units(b);
-    do_lathe_mode(b);
-    do_comp(b);
-    do_tool_length(b);
-    do_coord_system(b);
-    do_path_control(b);
-    do_distance(b);
-    do_retract(b);
-    do_nonmodal(b);
-    do_g92_family(b);
-    finish = do_motion(b) || finish;
-    InterpStatus st = do_stop(b);
-    if (st != INTERP_OK) return st;
-    run_remap(b);
-    return finish ? INTERP_EXECUTE_FINISH : INTERP_OK;
+}
+
+// Step 10: M6/M61; a tool change ends the block with execute-finish.
+void Interp::step_tool_change(Block &b)
+{
+    if (do_tool_change(b)) b.execute_finish = true;
+}
+
+// Step 28: motion; a probe ends the block with execute-finish.
+void Interp::step_motion(Block &b)
+{
+    if (do_motion(b)) b.execute_finish = true;
+}
+
+// Step 29: M0 M1 M2 M30 M60 M99.
+void Interp::step_stop(Block &b)
+{
+    b.status = do_stop(b);
 }
 
 // Check axis-word and modal-group combination rules of gcode.md §2 and words without users.

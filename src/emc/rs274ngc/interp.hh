@@ -55,6 +55,9 @@ struct RemapDef {
 // "<name>" for a named O-word label, the number for a numbered one.
 std::string label_text(const std::string &name);
 
+// "G88.1" for the G code ×10 881.
+std::string g_code_text(int g);
+
 // Fanuc label "O<n>" of a bare program-number line ("" when the line is not one).
 std::string fanuc_label_name(const std::string &line);
 
@@ -73,6 +76,8 @@ struct CallFrame {
     bool fanuc = false;            // M98 call (#1-#30 global)
     bool remap = false;            // a REMAP procedure (counts in _remap_level)
     int remap_motion = -1;         // remapped motion code to restore on return
+    std::shared_ptr<Block> resume_block; // REMAP: the suspended block to finish on return
+    size_t resume_step = 0;        // its next execution step
     long fanuc_count = 0;          // M98 L repeats left
     long fanuc_iterations = 0;
 };
@@ -153,6 +158,7 @@ public:
 private:
     InterpStatus run_line(const std::string &raw);
     InterpStatus execute_block(Block &b);
+    InterpStatus execute_steps(Block &b, size_t first);
     void unwind_after_error();
     Canon &out();
 
@@ -172,7 +178,7 @@ private:
     // control flow (oword.cc, fanuc.cc)
     InterpStatus execute_oword(Block &b);
     void o_call(Block &b);
-    void o_return(Block &b);
+    InterpStatus o_return(Block &b);
     void o_sub(Block &b);
     void o_if(Block &b);
     void o_else(Block &b);
@@ -181,7 +187,9 @@ private:
     void o_do(Block &b);
     void o_repeat(Block &b);
     void o_loop_end(Block &b);
-    void o_break(Block &b, bool cont);
+    void o_break(Block &b);
+    void o_continue(Block &b);
+    void leave_loop(Block &b, bool cont);
     void count_iteration(long &iterations, const std::string &name);
     void skip_to(const std::string &name, std::initializer_list<OKind> kinds, bool past);
     bool skip_match(const std::string &name, OKind kind);
@@ -204,7 +212,13 @@ private:
     std::string flow_error(const std::string &what, const Block &b) const;
     void flow_fail(const std::string &what, const Block &b);
 
-    // execution steps (execute.cc, modal.cc, mcodes.cc, comments.cc, tools.cc)
+public:
+    // execution steps (execute.cc, modal.cc, mcodes.cc, comments.cc, tools.cc); public for the
+    // step table of execute.cc
+    void step_comment(Block &b);
+    void step_tool_change(Block &b);
+    void step_motion(Block &b);
+    void step_stop(Block &b);
     void check_block(Block &b);
     void check_words(Block &b);
     void do_comment(Block &b);
@@ -240,6 +254,8 @@ private:
     bool do_motion(Block &b);
     InterpStatus do_stop(Block &b);
 
+
+private:
     // motion helpers (motion.cc, arcs.cc)
     Pose find_end(const Block &b);
     void polar_end(const Block &b, Pose &end);
@@ -296,7 +312,13 @@ private:
 
     // REMAP= support (remap.cc)
     void load_remaps(const std::vector<std::string> &lines);
-    bool run_remap(Block &b);
+    bool parse_remap(const std::string &line, RemapDef &def, char &kind, double &number) const;
+    bool remapped_motion(const Block &b) const;
+    std::vector<std::pair<const RemapDef *, std::string>> block_remaps(const Block &b) const;
+    void check_remap_args(const Block &b);
+    void check_remap_state(const RemapDef &def, const std::string &code) const;
+    bool remap_uses_word(const Block &b, char c) const;
+    void start_remap(const Block &b, const RemapDef &def, const std::string &code, size_t resume);
 
     // parameter file (varfile.cc) and predefined parameters (predef.cc)
     void read_var_file();

@@ -33,7 +33,6 @@ bool Interp::do_motion(Block &b)
     if (explicit_motion != -1) s_.motion_mode = explicit_motion;
     int m = s_.motion_mode;
     if (explicit_motion == -1 && !any_axis(b)) return false;
-    if (g_remaps_.count(m)) return false;
     if (nurbs_open_ && m != 52) throw InterpError("Must close the G5.2 block with G5.3 first");
     if (m == 800) {
         out().comment("interpreter: motion mode set to none");

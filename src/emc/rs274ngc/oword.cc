@@ -98,25 +98,22 @@ std::string Interp::flow_error(const std::string &what, const Block &) const
     return std::to_string(s_.sequence_number) + ": " + what + ": '" + s_.line_text + "'";
 }
 
-// Dispatch an O-word line.
+// Dispatch an O-word line to its keyword's handler.
 InterpStatus Interp::execute_oword(Block &b)
 {
     INTERP_FRAME();
-    switch (b.o_kind) {
-    case O_SUB: o_sub(b); break;
-    case O_ENDSUB: case O_RETURN: o_return(b); break;
-    case O_CALL: o_call(b); break;
-    case O_IF: o_if(b); break;
-    case O_ELSEIF: case O_ELSE: o_else(b); break;
-    case O_ENDIF: o_endif(b); break;
-    case O_WHILE: o_while(b); break;
-    case O_DO: o_do(b); break;
-    case O_ENDWHILE: case O_ENDREPEAT: o_loop_end(b); break;
-    case O_REPEAT: o_repeat(b); break;
-    case O_BREAK: o_break(b, false); break;
-    case O_CONTINUE: o_break(b, true); break;
-    default: break;
-    }
+    static const struct { OKind kind; void (Interp::*run)(Block &); } handlers[] = {
+        {O_SUB, &Interp::o_sub},           {O_CALL, &Interp::o_call},
+        {O_IF, &Interp::o_if},             {O_ELSEIF, &Interp::o_else},
+        {O_ELSE, &Interp::o_else},         {O_ENDIF, &Interp::o_endif},
+        {O_WHILE, &Interp::o_while},       {O_DO, &Interp::o_do},
+        {O_ENDWHILE, &Interp::o_loop_end}, {O_ENDREPEAT, &Interp::o_loop_end},
+        {O_REPEAT, &Interp::o_repeat},     {O_BREAK, &Interp::o_break},
+        {O_CONTINUE, &Interp::o_continue},
+    };
+    if (b.o_kind == O_ENDSUB || b.o_kind == O_RETURN) return o_return(b);
+    for (const auto &h : handlers)
+        if (h.kind == b.o_kind) (this->*h.run)(b);
     return INTERP_OK;
 }
 
@@ -137,18 +134,24 @@ void Interp::o_sub(Block &b)
     skip_sub_ = true;
 }
 
-// "return"/"endsub": leave the subroutine with an optional value.
-void Interp::o_return(Block &b)
+// "return"/"endsub": leave the subroutine with an optional value; a remap procedure's
+// return finishes the block that called it.
+InterpStatus Interp::o_return(Block &b)
 {
     INTERP_FRAME();
     CallFrame &f = calls_.back();
     if (f.fanuc) throw InterpError("Fanuc 'O....' subroutine definition must end with 'M99'");
-    if (calls_.size() < 2 || (b.o_kind == O_ENDSUB && f.sub_name != b.o_name))
-        return flow_fail("not in a subroutine definition", b);
+    if (calls_.size() < 2 || (b.o_kind == O_ENDSUB && f.sub_name != b.o_name)) {
+        flow_fail("not in a subroutine definition", b);
+        return INTERP_OK;
+    }
     if (f.autorestore && f.saved.valid) modal_restore(f.saved);
+    std::shared_ptr<Block> resume = f.resume_block;
+    size_t step = f.resume_step;
     pop_call();
     value_ = b.o_has_expr ? b.o_value : 0.0;
     value_returned_ = b.o_has_expr ? 1.0 : 0.0;
+    return resume ? execute_steps(*resume, step) : INTERP_OK;
 }
 
 // "call": find the subroutine and enter it.
@@ -412,8 +415,20 @@ void Interp::o_loop_end(Block &b)
         f.flow.pop_back();
 }
 
-// "break" (leave the loop) or "continue" (next iteration).
-void Interp::o_break(Block &b, bool cont)
+// "break": leave the loop.
+void Interp::o_break(Block &b)
+{
+    leave_loop(b, false);
+}
+
+// "continue": next iteration of the loop.
+void Interp::o_continue(Block &b)
+{
+    leave_loop(b, true);
+}
+
+// Skip to the end of the innermost loop named by b (past it for break, onto it for continue).
+void Interp::leave_loop(Block &b, bool cont)
 {
     INTERP_FRAME();
     CallFrame &f = calls_.back();

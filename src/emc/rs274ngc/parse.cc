@@ -223,10 +223,7 @@ void Interp::parse_g(const std::string &t, size_t &pos, Block &b)
     int g = (int)code;
     int group = g_group(g);
     auto remap = g_remaps_.find(g);
-    if (remap != g_remaps_.end()) {
-        group = remap->second.group;
-        b.remap_g = g;
-    }
+    if (remap != g_remaps_.end()) group = remap->second.group;
     if (group < 0 || group >= GG_COUNT) throw InterpError("Unknown g code used");
     int &slot = b.g_modes[group];
     if (slot != -1 && group == GG_MOTION && (slot == 800 || g == 800)) {
@@ -246,14 +243,8 @@ void Interp::parse_m(const std::string &t, size_t &pos, Block &b)
     int m = to_int(read_real_value(t, pos));
     if (m < 0) throw InterpError("Negative m code used");
     auto remap = m_remaps_.find(m);
-    if (remap != m_remaps_.end()) {
-        if (b.m_count >= 4) throw InterpError("Too many m codes on line");
-        if (b.remap_m != -1) throw InterpError("Two m codes used from same modal group");
-        b.remap_m = m;
-        b.m_count++;
-        return;
-    }
-    if (m > 199) throw InterpError("M-code greater than 199: M" + std::to_string(m));
+    if (m > 199 && remap == m_remaps_.end())
+        throw InterpError("M-code greater than 199: M" + std::to_string(m));
     if (b.m_count >= 4) throw InterpError("Too many m codes on line");
     if (m == 98) {
         if (b.m98) throw InterpError("Two m codes used from same modal group");
@@ -261,7 +252,7 @@ void Interp::parse_m(const std::string &t, size_t &pos, Block &b)
         b.m_count++;
         return;
     }
-    int group = m_group(m);
+    int group = remap != m_remaps_.end() ? remap->second.group : m_group(m);
     if (group < 0) throw InterpError("Unknown m code used: M" + std::to_string(m));
     if (b.m_modes[group] != -1) throw InterpError("Two m codes used from same modal group");
     b.m_modes[group] = m;
