@@ -154,17 +154,7 @@ double Interp::read_unary(const std::string &t, size_t &pos)
         throw InterpError(std::string("Unknown word starting with ") + t[start]);
     if (pos >= t.size() || t[pos] != '[')
         throw InterpError("Left bracket missing after unary operation name");
-    if (name == "exists") {
-        pos++;
-        if (t.compare(pos, 2, "#<") != 0)
-            throw InterpError("EXISTS argument must be a named parameter");
-        pos++;
-        std::string pname = read_name(t, pos);
-        if (pos >= t.size() || t[pos] != ']')
-            throw InterpError("Expected ']' after EXISTS parameter");
-        pos++;
-        return named_exists(pname) ? 1.0 : 0.0;
-    }
+    if (name == "exists") return read_exists(t, pos);
     double v = eval_expression(t, pos);
     if (name == "atan") {
         if (pos >= t.size() || t[pos] != '/')
@@ -176,6 +166,28 @@ double Interp::read_unary(const std::string &t, size_t &pos)
         return std::atan2(v, x) / DEG;
     }
     return checked(apply_unary(name, v));
+}
+
+// EXISTS[#<name>], EXISTS[#n] or EXISTS[##n] (pos on '['): 1 when the named parameter is
+// defined or the number is a parameter number, else 0.
+double Interp::read_exists(const std::string &t, size_t &pos)
+{
+    INTERP_FRAME();
+    pos++;
+    if (pos >= t.size() || t[pos] != '#')
+        throw InterpError("EXISTS argument must be a parameter: #<name>, #n or ##n");
+    pos++;
+    double found;
+    if (pos < t.size() && t[pos] == '<') {
+        found = named_exists(read_name(t, pos)) ? 1.0 : 0.0;
+    } else {
+        double n = read_real_value(t, pos);
+        found = (n == std::nearbyint(n) && n >= 1 && n < PARAM_COUNT) ? 1.0 : 0.0;
+    }
+    if (pos >= t.size() || t[pos] != ']')
+        throw InterpError("Right bracket missing after EXISTS parameter");
+    pos++;
+    return found;
 }
 
 // Read a binary operator at pos (symbols or lower-case words); ']' gives OP_END.

@@ -172,6 +172,7 @@ private:
     std::string read_name(const std::string &t, size_t &pos);
     double read_parameter(const std::string &t, size_t &pos);
     double read_unary(const std::string &t, size_t &pos);
+    double read_exists(const std::string &t, size_t &pos);
     double eval_binary(double a, BinOp op, double b);
     BinOp read_operator(const std::string &t, size_t &pos);
 
