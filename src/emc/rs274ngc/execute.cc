@@ -135,34 +135,6 @@ void Interp::check_block(Block &b)
     check_words(b);
 }
 
-// Letters that need a code to use them.
-void Interp::check_words(Block &b)
-{
-    INTERP_FRAME();
-    int motion = b.g_modes[GG_MOTION] != -1 ? b.g_modes[GG_MOTION] : s_.motion_mode;
-    int g0 = b.g_modes[GG_NONMODAL];
-    int comp = b.g_modes[GG_COMP];
-    int tl = b.g_modes[GG_TOOL_LENGTH];
-    bool cycle = (motion >= 810 && motion <= 890) || motion == 730 || motion == 740;
-    bool lathe = motion >= 700 && motion <= 722;
-    if (b.word('d') && !(comp >= 410 || lathe || motion == 730 || motion == 830 ||
-                         b.g_modes[GG_SPINDLE] == 960 || motion == 760))
-        throw InterpError("D word with no G41, G41.1, G42, G42.1, G71, G71.1, G71.2 G73, G83 "
-                          "or G96 to use it");
-    if (b.word('h') && tl != 430 && tl != 432 && motion != 760)
-        throw InterpError("H word with no G43 or G76 to use it");
-    bool r_user = motion == 20 || motion == 30 || cycle || g0 == 100 || motion == 760 || lathe ||
-                  b.m_modes[MG_SPINDLE] == 19 || b.g_modes[GG_PATH] == 640;
-    if (b.word('r') && !r_user) throw InterpError("R word with no g code that uses it");
-    if (b.word('r') && b.g_modes[GG_PATH] == 640 && b.m_modes[MG_SPINDLE] == 19)
-        throw InterpError("R word is ambiguous on a line with both G64 and M19 - use separate lines");
-    if (b.word('l') && !(g0 == 100 || cycle || motion == 760 || motion == 52 || comp == 411 || comp == 421 ||
-                         b.m_modes[MG_IO] == 66 || lathe || b.m98))
-        throw InterpError("L word with no G10, G76, cycle or M66 to use it");
-    if (g0 == 40 && (motion == 20 || motion == 30) && b.g_modes[GG_MOTION] != -1)
-        throw InterpError("G4 not allowed with G2 or G3 because they both use P");
-}
-
 // G96/G97 (step 4).
 void Interp::do_spindle_mode(Block &b)
 {
@@ -225,6 +197,7 @@ void Interp::do_dwell(Block &b)
 {
     INTERP_FRAME();
     if (b.g_modes[GG_NONMODAL] != 40) return;
-    if (!b.word('p') || b.value('p') < 0) throw InterpError("Dwell time missing with g4");
+    if (!b.word('p')) throw InterpError("Dwell time missing with g4");
+    if (b.value('p') < 0) throw InterpError("Negative dwell time used with g4");
     out().dwell(b.value('p'));
 }

@@ -222,6 +222,7 @@ public:
     void step_stop(Block &b);
     void check_block(Block &b);
     void check_words(Block &b);
+    bool uses_dollar(const Block &b, int motion) const;
     void do_comment(Block &b);
     std::string expand_text(const std::string &text);
     std::string expand_param(const std::string &text, size_t &i, int decimals);

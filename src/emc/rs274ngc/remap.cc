@@ -61,7 +61,7 @@ bool Interp::parse_remap(const std::string &line, RemapDef &def, char &kind, dou
                 ini_path_.c_str(), line.c_str());
         return false;
     }
-    def.group = kind == 'G' ? GG_MOTION : MG_USER;
+    def.group = kind == 'G' ? (int)GG_MOTION : (int)MG_USER;
     if (group.empty()) return true;
     int g = atoi(group.c_str());
     bool ok = kind == 'G' ? g == GG_MOTION : (g >= MG_IO && g <= MG_USER);
