@@ -308,6 +308,9 @@ bool Interp::load_ini(const std::string &path)
     st.oword_warnonly = flag("OWORD_WARNONLY", "RS274NGC", false);
     st.disable_fanuc_style_sub = flag("DISABLE_FANUC_STYLE_SUB", "RS274NGC", false);
     st.ini_vars = flag("INI_VARS", "RS274NGC", true);
+    st.loop_limit = (long)real("MAX_LOOP_ITERATIONS", "RS274NGC", (double)st.loop_limit);
+    st.total_loop_limit =
+        (long)real("MAX_TOTAL_LOOP_ITERATIONS", "RS274NGC", (double)st.total_loop_limit);
     st.hal_pin_vars = flag("HAL_PIN_VARS", "RS274NGC", true);
     st.tool_change_quill_up = flag("TOOL_CHANGE_QUILL_UP", "EMCIO", false);
     st.tool_change_at_g30 = flag("TOOL_CHANGE_AT_G30", "EMCIO", false);

@@ -324,6 +324,7 @@ private:
 
     // parameter file (varfile.cc) and predefined parameters (predef.cc)
     void read_var_file();
+    std::string var_file_line(const char *line, int &last);
     void write_var_file();
     bool predefined(const std::string &name, double &v);
     bool hal_value(const std::string &name, double &v);
@@ -333,6 +334,7 @@ private:
     std::unique_ptr<cutcomp::Engine> comp_;
     std::string var_file_ = "/etc/emc2/sample-configs/sim/sim.var";
     std::set<int> in_var_file_;
+    bool var_file_bad_ = false;      // the .var file was refused: never rewrite it
     std::vector<CallFrame> calls_;
     std::map<std::string, SubDef> subs_;
     std::map<std::string, double> globals_;

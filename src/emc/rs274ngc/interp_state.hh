@@ -103,6 +103,8 @@ struct InterpSettings {
     bool random_toolchanger = false;
     bool lazy_close = false;
     int metric_machine = -1;          // _metric_machine
+    long loop_limit = 100000000;      // passes of one loop before it counts as runaway (0: none)
+    long total_loop_limit = 1000000000; // passes of all loops of one program (0: none)
     std::string program_prefix;
     std::vector<std::string> subroutine_path;
     std::vector<std::string> user_m_path;     // [RS274NGC]USER_M_PATH dirs (M100-M199)

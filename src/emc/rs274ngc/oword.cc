@@ -9,9 +9,6 @@
 namespace {
 
 constexpr size_t MAX_CALL_LEVELS = 10;
-constexpr long LOOP_LIMIT = 1000000;
-// Passes of all loops together that one program (or MDI command) may run: a runaway guard for nested loops.
-constexpr long TOTAL_LOOP_LIMIT = 10000000;
 
 } // namespace
 
@@ -441,15 +438,17 @@ void Interp::leave_loop(Block &b, bool cont)
     skip_to(b.o_name, {end}, !cont);
 }
 
-// Guard against endless loops: a clear error instead of a hang.
+// Guard against endless loops: a clear error instead of a hang ([RS274NGC]
+// MAX_LOOP_ITERATIONS / MAX_TOTAL_LOOP_ITERATIONS, 0 = no limit).
 void Interp::count_iteration(long &iterations, const std::string &name)
 {
     INTERP_FRAME();
-    if (++iterations > LOOP_LIMIT)
+    long limit = s_.settings.loop_limit, total = s_.settings.total_loop_limit;
+    if (++iterations > limit && limit > 0)
         throw InterpError(std::to_string(s_.sequence_number) + ": loop o" + name +
-                          " ran more than " + std::to_string(LOOP_LIMIT) + " iterations");
-    if (++total_iterations_ > TOTAL_LOOP_LIMIT)
+                          " ran more than " + std::to_string(limit) + " iterations");
+    if (++total_iterations_ > total && total > 0)
         throw InterpError(std::to_string(s_.sequence_number) + ": loop o" + name +
-                          " ran more than " + std::to_string(TOTAL_LOOP_LIMIT) +
+                          " ran more than " + std::to_string(total) +
                           " iterations of all loops in this program");
 }
