@@ -35,7 +35,9 @@ void Interp::read_var_file()
     while (error.empty() && fgets(line, sizeof line, f)) {
         lineno++;
         error = var_file_line(line, last);
-        if (!error.empty()) error = var_file_ + ":" + std::to_string(lineno) + ": " + error;
+        bool plain = error == "Parameter file out of order";  // LinuxCNC's text, kept as is
+        if (!error.empty() && !plain)
+            error = var_file_ + ":" + std::to_string(lineno) + ": " + error;
     }
     fclose(f);
     if (!error.empty()) {
