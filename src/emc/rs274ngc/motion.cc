@@ -2,6 +2,7 @@
 #include <cmath>
 
 #include "interp.hh"
+#include "polar.hh"
 
 namespace {
 
@@ -78,20 +79,9 @@ void Interp::polar_end(const Block &b, Pose &end)
     INTERP_FRAME();
     if (s_.plane != CANON_PLANE_XY) throw InterpError("Polar coordinates only in the XY plane");
     double x = s_.current[AX_X], y = s_.current[AX_Y];
-    double r = std::hypot(x, y);
-    double a = std::atan2(y, x) / DEG;
-    if (s_.distance_incremental) {
-        if (r == 0.0 && b.has_polar_angle)
-            throw InterpError("Incremental motion with polar coordinates is indeterminate when "
-                              "at the origin");
-        r += b.has_polar_radius ? b.polar_radius : 0.0;
-        a += b.has_polar_angle ? b.polar_angle : 0.0;
-    } else {
-        if (b.has_polar_radius) r = b.polar_radius;
-        if (b.has_polar_angle) a = b.polar_angle;
-    }
-    end[AX_X] = r * std::cos(a * DEG);
-    end[AX_Y] = r * std::sin(a * DEG);
+    polar_point(b, s_.distance_incremental, x, y);
+    end[AX_X] = x;
+    end[AX_Y] = y;
 }
 
 // In G93 emit SET_FEED_RATE(length * F) before a move.

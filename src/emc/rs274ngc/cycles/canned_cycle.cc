@@ -4,6 +4,7 @@
 
 #include "../interp_hooks.hh"
 #include "cycle_bodies.hh"
+#include "../polar.hh"
 
 namespace cycles {
 
@@ -139,9 +140,17 @@ static void check_pecks(int code, const Hole &h)
                           std::to_string((long)MAX_PECKS) + " pecks)");
 }
 
-// where hole n (0-based) is: G90 at the words (or current point), G91 stepping by them
+// where hole n (0-based) is: G90 at the words (or current point), G91 stepping by them;
+// polar words are applied again for every repeat (G91: around the origin)
 static void hole_position(const InterpState &s, const Block &b, const PlaneAxes &ax, Hole &h)
 {
+    if (b.has_polar_radius || b.has_polar_angle) {
+        if (s.plane != CANON_PLANE_XY) throw InterpError("Polar coordinates only in the XY plane");
+        h.a = s.current[AX_X];
+        h.b = s.current[AX_Y];
+        polar_point(b, s.distance_incremental, h.a, h.b);
+        return;
+    }
     char la = axis_letter(ax.aa), lb = axis_letter(ax.bb);
     if (s.distance_incremental) {
         h.a = s.current[ax.aa] + (b.word(la) ? axis_word(s, b, la) : 0);
@@ -196,6 +205,8 @@ void execute(InterpState &s, const Block &b, Canon &canon)
     check_rotary(b);
     repeats(b);
     bool same = s.cycle_last == code;
+    if (!same)
+        s.cycle_il_valid = false;
     Hole h;
     h.spindle = spindle_of(b);
     h.spindle_dir = s.spindle_dir[h.spindle];
