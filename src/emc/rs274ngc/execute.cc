@@ -141,7 +141,7 @@ void Interp::do_spindle_mode(Block &b)
     INTERP_FRAME();
     int g = b.g_modes[GG_SPINDLE];
     if (g == -1) return;
-    int sp = 0;
+    int sp = s_.spindle_of(b);
     if (g == 960) {
         double max = b.word('d') ? b.value('d') : 1e30;
         s_.css_mode[sp] = true;
@@ -188,8 +188,9 @@ void Interp::do_speed(Block &b)
 {
     INTERP_FRAME();
     if (!b.word('s')) return;
-    s_.speed[0] = b.value('s');
-    out().set_spindle_speed(0, s_.speed[0]);
+    int sp = s_.spindle_of(b);
+    s_.speed[sp] = b.value('s');
+    out().set_spindle_speed(sp, s_.speed[sp]);
 }
 
 // G4 dwell (step 15).

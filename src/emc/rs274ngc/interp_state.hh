@@ -78,8 +78,8 @@ enum RetractMode { RETRACT_OLD_Z = 0, RETRACT_R_PLANE = 1 };
 
 // Number of numbered parameters (#0 unused .. #5601).
 constexpr int PARAM_COUNT = 5602;
-// Number of spindles the interpreter tracks.
-constexpr int SPINDLE_COUNT = 1;
+// Most spindles a machine may have ([TRAJ]SPINDLES); the state arrays have this size.
+constexpr int SPINDLE_COUNT = 8;
 // Parameter numbers the cycles and comp code read.
 constexpr int PARAM_G28_HOME = 5161;
 constexpr int PARAM_G30_HOME = 5181;
@@ -150,7 +150,10 @@ struct InterpState {
     FeedMode feed_mode = FEED_UNITS_PER_MINUTE;
     double feed_rate = 0;
     double speed[SPINDLE_COUNT] = {};
-    CanonDirection spindle_dir[SPINDLE_COUNT] = {CANON_STOPPED};
+    CanonDirection spindle_dir[SPINDLE_COUNT] = {CANON_STOPPED, CANON_STOPPED, CANON_STOPPED,
+                                                 CANON_STOPPED, CANON_STOPPED, CANON_STOPPED,
+                                                 CANON_STOPPED, CANON_STOPPED};
+    int num_spindles = 1;                 // [TRAJ]SPINDLES
     bool css_mode[SPINDLE_COUNT] = {};    // G96
     double css_max[SPINDLE_COUNT] = {};
     bool mist = false, flood = false;
@@ -200,6 +203,13 @@ struct InterpState {
     InterpSettings settings;
     SavedModal saved;                     // M70 slot
 
+    // spindle selected by a block's $ word (0 without one); error when not configured
+    int spindle_of(const Block &b) const
+    {
+        int sp = b.has_dollar ? clamp_int(b.dollar) : 0;
+        if (sp < 0 || sp >= num_spindles) throw InterpError("Invalid spindle ($) number");
+        return sp;
+    }
     // value of numbered parameter n
     double param(int n) const { return params[n]; }
     // set numbered parameter n

@@ -169,8 +169,8 @@ void Interp::move_g33(const Block &b, bool rigid)
         throw InterpError("Cannot use G33.1 with cutter radius compensation");
     if (b.word('f')) throw InterpError("F word used with a g33/g33.1");
     if (!b.word('k')) throw InterpError("K word missing with g33/g33.1");
-    int sp = b.has_dollar ? (int)b.dollar : 0;
-    if (!rigid && s_.spindle_dir[0] == CANON_STOPPED) throw InterpError("Spindle not turning in G33");
+    int sp = s_.spindle_of(b);
+    if (!rigid && s_.spindle_dir[sp] == CANON_STOPPED) throw InterpError("Spindle not turning in G33");
     Pose end = find_end(b);
     out().start_speed_feed_synch(sp, b.value('k'), false);
     if (rigid) {

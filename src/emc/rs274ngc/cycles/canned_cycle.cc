@@ -53,13 +53,6 @@ static int repeats(const Block &b)
     return l;
 }
 
-// spindle the block selects with $ (default 0)
-static int spindle_of(const Block &b)
-{
-    int sp = b.has_dollar ? (int)std::lround(b.dollar) : 0;
-    return (sp >= 0 && sp < SPINDLE_COUNT) ? sp : 0;
-}
-
 // spindle direction checks of the tapping and boring cycles
 static void check_spindle(int code, CanonDirection dir)
 {
@@ -208,7 +201,7 @@ void execute(InterpState &s, const Block &b, Canon &canon)
     if (!same)
         s.cycle_il_valid = false;
     Hole h;
-    h.spindle = spindle_of(b);
+    h.spindle = s.spindle_of(b);
     h.spindle_dir = s.spindle_dir[h.spindle];
     check_spindle(code, h.spindle_dir);
     dwell_and_peck(s, b, code, same, h);

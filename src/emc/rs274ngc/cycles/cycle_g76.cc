@@ -65,9 +65,7 @@ static Thread read_thread(const InterpState &s, const Block &b)
     t.taper_ends = b.word('l') ? (int)std::lround(b.value('l')) : 0;
     if (t.taper_length < 0 || t.taper_ends < 0 || t.taper_ends > 3)
         throw InterpError("In G76, E must not be negative and L must be 0 to 3");
-    t.spindle = b.has_dollar ? (int)std::lround(b.dollar) : 0;
-    if (t.spindle < 0 || t.spindle >= SPINDLE_COUNT)
-        t.spindle = 0;
+    t.spindle = s.spindle_of(b);
     return t;
 }
 
