@@ -229,7 +229,6 @@ InterpStatus Interp::run_line(const std::string &raw)
     s_.line_text = raw;
     eof_error_ = false;
     error_stack_.clear();
-    interp_error_unwinding = false;
     try {
         if (line_budget_ >= 0 && line_budget_-- == 0) throw InterpError("Line budget exhausted");
         if (skipping_) {
@@ -244,8 +243,7 @@ InterpStatus Interp::run_line(const std::string &raw)
         if (b.block_delete && block_delete_) return INTERP_OK;
         return execute_block(b);
     } catch (const InterpError &e) {
-        interp_error_unwinding = false;
-        error_ = e.what();
+            error_ = e.what();
         auto at = dynamic_cast<const InterpErrorAt *>(&e);
         error_line_ = at ? at->line() : raw;
         unwind_after_error();

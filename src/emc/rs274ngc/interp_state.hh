@@ -17,16 +17,10 @@ enum AxisIndex { AX_X = 0, AX_Y, AX_Z, AX_A, AX_B, AX_C, AX_U, AX_V, AX_W, AX_CO
 // Nine axis values X Y Z A B C U V W.
 using Pose = std::array<double, AX_COUNT>;
 
-// True from the creation of an InterpError until the interpreter catches it (rs274 -s stack).
-inline bool interp_error_unwinding = false;
-
 // An interpreter error; what() is the exact user-visible text (gcode.md).
 class InterpError : public std::runtime_error {
 public:
-    explicit InterpError(const std::string &msg) : std::runtime_error(msg)
-    {
-        interp_error_unwinding = true;
-    }
+    explicit InterpError(const std::string &msg) : std::runtime_error(msg) {}
 };
 
 // An error detected on another line than the one being executed (a forward search):
