@@ -169,6 +169,7 @@ private:
     void parse_m(const std::string &t, size_t &pos, Block &b);
     void parse_assignment(const std::string &t, size_t &pos, Block &b);
     void parse_oword(const std::string &t, size_t &pos, Block &b);
+    void parse_o_args(const std::string &t, size_t &pos, Block &b);
     std::string read_name(const std::string &t, size_t &pos);
     double read_parameter(const std::string &t, size_t &pos);
     double read_unary(const std::string &t, size_t &pos);
