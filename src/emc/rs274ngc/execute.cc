@@ -110,10 +110,26 @@ void Interp::step_stop(Block &b)
 void Interp::check_block(Block &b)
 {
     INTERP_FRAME();
-    int g0 = b.g_modes[GG_NONMODAL];
-    int motion = b.g_modes[GG_MOTION];
+    check_axis_words(b);
+    if ((b.has_polar_radius || b.has_polar_angle) && b.word('x'))
+        throw InterpError("Cannot specify both polar coordinate and X word");
+    if ((b.has_polar_radius || b.has_polar_angle) && b.word('y'))
+        throw InterpError("Cannot specify both polar coordinate and Y word");
+    if (b.g_modes[GG_NONMODAL] == 530) {
+        int motion = b.motion() != -1 ? b.motion() : s_.motion_mode;
+        if (motion != 0 && motion != 10) throw InterpError("Must use g0 or g1 with g53");
+        if (s_.comp_side != CANON_SIDE_OFF)
+            throw InterpError("Cannot use G53 with cutter radius comp");
+    }
+    check_words(b);
+}
+
+// Axis words need exactly one code that uses them.
+void Interp::check_axis_words(const Block &b) const
+{
+    int motion = b.motion();
     bool axes = has_axis(b);
-    bool g0_axes = g0_uses_axes(g0);
+    bool g0_axes = g0_uses_axes(b.g_modes[GG_NONMODAL]);
     if (g0_axes && motion != -1 && motion != 800)
         throw InterpError("Cannot use two g codes that both use axis values");
     if (motion == 800 && axes && !g0_axes)
@@ -122,17 +138,6 @@ void Interp::check_block(Block &b)
     bool tl_axes = tl == 431 || tl == 432;
     if (axes && !g0_axes && !tl_axes && motion == -1 && s_.motion_mode == 800)
         throw InterpError("Cannot use axis values without a g code that uses them");
-    if ((b.has_polar_radius || b.has_polar_angle) && b.word('x'))
-        throw InterpError("Cannot specify both polar coordinate and X word");
-    if ((b.has_polar_radius || b.has_polar_angle) && b.word('y'))
-        throw InterpError("Cannot specify both polar coordinate and Y word");
-    if (g0 == 530) {
-        int m = motion != -1 ? motion : s_.motion_mode;
-        if (m != 0 && m != 10) throw InterpError("Must use g0 or g1 with g53");
-        if (s_.comp_side != CANON_SIDE_OFF)
-            throw InterpError("Cannot use G53 with cutter radius comp");
-    }
-    check_words(b);
 }
 
 // G96/G97 (step 4).

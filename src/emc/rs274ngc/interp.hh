@@ -221,8 +221,16 @@ public:
     void step_tool_change(Block &b);
     void step_motion(Block &b);
     void step_stop(Block &b);
+    // motion handlers (motion.cc, arcs.cc, spline.cc), public for the table of motion.cc
+    void move_straight(const Block &b, int mode);
+    void move_arc(const Block &b, int mode);
+    void move_probe(const Block &b, int code);
+    void move_g33(const Block &b, int code);
+    void move_spline(const Block &b, int mode);
+    void nurbs_point(const Block &b, int code);
     void check_block(Block &b);
     void check_words(Block &b);
+    void check_axis_words(const Block &b) const;
     bool uses_dollar(const Block &b, int motion) const;
     void do_comment(Block &b);
     std::string expand_text(const std::string &text);
@@ -247,6 +255,10 @@ public:
     void do_units(Block &b);
     void do_lathe_mode(Block &b);
     void do_comp(Block &b);
+    void comp_off();
+    double dynamic_comp_radius(const Block &b, int &g, int &orient) const;
+    double tool_comp_radius(const Block &b, int &orient) const;
+    int h_word_index(const Block &b) const;
     void do_tool_length(Block &b);
     void do_coord_system(Block &b);
     void do_path_control(Block &b);
@@ -255,6 +267,7 @@ public:
     void do_nonmodal(Block &b);
     void do_g92_family(Block &b);
     bool do_motion(Block &b);
+    bool nonmodal_motion(const Block &b);
     InterpStatus do_stop(Block &b);
 
 
@@ -263,17 +276,13 @@ private:
     Pose find_end(const Block &b);
     void polar_end(const Block &b, Pose &end);
     double straight_length(const Pose &a, const Pose &e) const;
-    void move_straight(const Block &b, int mode);
-    void move_arc(const Block &b, int mode);
     void arc_center_r(const Block &b, double s1, double s2, double e1, double e2, int mode,
                       double &c1, double &c2);
     void arc_center_ijk(const Block &b, double s1, double s2, double e1, double e2, double &c1,
                         double &c2);
     double arc_length(double s1, double s2, double e1, double e2, double c1, double c2,
                       int rotation, double axial) const;
-    void move_probe(const Block &b);
     void probe_result();
-    void move_g33(const Block &b, bool rigid);
     void move_home(const Block &b, int code);
     void store_home(int code);
     void move_cycle(Block &b);
@@ -282,8 +291,6 @@ private:
     // splines (spline.cc)
     void check_spline(const Block &b);
     spline::Cubic spline_curve(const Block &b, int mode, const Pose &end);
-    void move_spline(const Block &b, int mode);
-    void nurbs_point(const Block &b);
     void nurbs_close(const Block &b);
     Pose machine_to_program_pose(const Pose &m) const;
     Pose program_to_machine_pose(const Pose &p) const;

@@ -19,15 +19,37 @@ bool any_axis(const Block &b)
 
 } // namespace
 
+// Group-0 codes handled at the motion step (G28/G30 and their .1, G5.3); true when the block's
+// motion is done (G10, G52, G92 suspend the modal motion for the line).
+bool Interp::nonmodal_motion(const Block &b)
+{
+    int g0 = b.g_modes[GG_NONMODAL];
+    if (g0 == 280 || g0 == 300) move_home(b, g0);
+    else if (g0 == 281 || g0 == 301) store_home(g0);
+    else if (g0 == 53) nurbs_close(b);
+    return g0 == 280 || g0 == 300 || g0 == 281 || g0 == 301 || g0 == 53 || g0 == 100 ||
+           g0 == 520 || g0 == 920;
+}
+
+// The motion codes, by range of code ×10: handler and whether the block ends with
+// execute-finish (probing).
+struct MotionHandler {
+    int lo, hi;
+    void (Interp::*run)(const Block &, int);
+    bool finish;
+};
+
+const MotionHandler MOTION_HANDLERS[] = {
+    {0, 10, &Interp::move_straight, false},   {20, 30, &Interp::move_arc, false},
+    {330, 331, &Interp::move_g33, false},     {382, 385, &Interp::move_probe, true},
+    {52, 52, &Interp::nurbs_point, false},    {50, 51, &Interp::move_spline, false},
+};
+
 // Motion step (28); returns true when the block must end with execute-finish.
 bool Interp::do_motion(Block &b)
 {
     INTERP_FRAME();
-    int g0 = b.g_modes[GG_NONMODAL];
-    if (g0 == 280 || g0 == 300) { move_home(b, g0); return false; }
-    if (g0 == 281 || g0 == 301) { store_home(g0); return false; }
-    if (g0 == 100 || g0 == 520 || g0 == 920) return false;
-    if (g0 == 53) { nurbs_close(b); return false; }
+    if (nonmodal_motion(b)) return false;
     int explicit_motion = b.motion();
     int tl = b.g_modes[GG_TOOL_LENGTH];
     if (explicit_motion == -1 && (tl == 431 || tl == 432)) return false;
@@ -40,18 +62,18 @@ bool Interp::do_motion(Block &b)
         s_.cycle_last = -1;
         return false;
     }
-    bool cycle = m == 730 || m == 740 || (m >= 810 && m <= 890) || m == 760 ||
-                 (m >= 700 && m <= 722);
-    if (cycle) { move_cycle(b); return false; }
+    if (m == 730 || m == 740 || (m >= 810 && m <= 890) || m == 760 || (m >= 700 && m <= 722)) {
+        move_cycle(b);
+        return false;
+    }
     s_.cycle_last = -1;
     s_.cycle_il_valid = false;
     if (m != 50 && m != 51) spline_continues_ = false;
-    if (m == 0 || m == 10) { move_straight(b, m); return false; }
-    if (m == 20 || m == 30) { move_arc(b, m); return false; }
-    if (m == 330 || m == 331) { move_g33(b, m == 331); return false; }
-    if (m >= 382 && m <= 385) { move_probe(b); return true; }
-    if (m == 52) { nurbs_point(b); return false; }
-    move_spline(b, m);
+    for (const MotionHandler &h : MOTION_HANDLERS) {
+        if (m < h.lo || m > h.hi) continue;
+        (this->*h.run)(b, m);
+        return h.finish;
+    }
     return false;
 }
 
@@ -162,8 +184,9 @@ void Interp::store_home(int code)
 }
 
 // G33 (spindle-synchronized move) / G33.1 (rigid tap).
-void Interp::move_g33(const Block &b, bool rigid)
+void Interp::move_g33(const Block &b, int code)
 {
+    bool rigid = code == 331;
     INTERP_FRAME();
     if (s_.comp_side != CANON_SIDE_OFF && rigid)
         throw InterpError("Cannot use G33.1 with cutter radius compensation");
@@ -184,7 +207,7 @@ void Interp::move_g33(const Block &b, bool rigid)
 }
 
 // G38.2-G38.5 straight probe.
-void Interp::move_probe(const Block &b)
+void Interp::move_probe(const Block &b, int)
 {
     INTERP_FRAME();
     if (!any_axis(b)) throw InterpError("All axes missing with motion code");

@@ -90,7 +90,7 @@ void Interp::move_spline(const Block &b, int mode)
 
 // G5.2 line: the first opens a block (current point = first control point, L = order), each adds
 // its X Y as a control point with weight P (default 1).
-void Interp::nurbs_point(const Block &b)
+void Interp::nurbs_point(const Block &b, int)
 {
     INTERP_FRAME();
     check_spline(b);
