@@ -93,6 +93,17 @@ void Interp::arc_center_ijk(const Block &b, double s1, double s2, double e1, dou
     }
 }
 
+// Turns of an arc: the P word (a positive integer), default 1.
+int Interp::arc_turns(const Block &b) const
+{
+    if (!b.word('p')) return 1;
+    double p = b.value('p');
+    int turns = clamp_int(p);
+    if (turns < 1 || std::fabs(p - turns) > 0.0001)
+        throw InterpError("P word is not a positive integer");
+    return turns;
+}
+
 // G2 / G3.
 void Interp::move_arc(const Block &b, int mode)
 {
@@ -110,21 +121,14 @@ void Interp::move_arc(const Block &b, int mode)
     double c1, c2;
     if (b.word('r')) {
         static const char letters[] = "xyzabc";
-        if (!b.word(letters[pa.first]) && !b.word(letters[pa.second]) && !b.has_polar_radius &&
-            !b.has_polar_angle)
-            throw InterpError(pa.missing);
+        bool in_plane = b.word(letters[pa.first]) || b.word(letters[pa.second]) ||
+                        b.has_polar_radius || b.has_polar_angle;
+        if (!in_plane) throw InterpError(pa.missing);
         arc_center_r(b, s1, s2, e1, e2, mode, c1, c2);
     } else {
         arc_center_ijk(b, s1, s2, e1, e2, c1, c2);
     }
-    int turns = 1;
-    if (b.word('p')) {
-        double p = b.value('p');
-        turns = clamp_int(p);
-        if (turns < 1 || std::fabs(p - turns) > 0.0001)
-            throw InterpError("P word is not a positive integer");
-    }
-    int rotation = mode == 20 ? -turns : turns;
+    int rotation = mode == 20 ? -arc_turns(b) : arc_turns(b);
     if (s_.feed_mode == FEED_INVERSE_TIME)
         apply_inverse_time(arc_length(s1, s2, e1, e2, c1, c2, rotation,
                                       end[pa.normal] - s_.current[pa.normal]), b);

@@ -242,6 +242,10 @@ public:
     void do_select_tool(Block &b);
     void do_io(Block &b);
     void do_wait_input(Block &b);
+    void check_wait_input(const Block &b, int &type, double &timeout) const;
+    void spindle_direction(int m, int s);
+    void orient_spindle(const Block &b, int sp);
+    void modal_state_code(int m);
     bool do_tool_change(Block &b);
     void set_tool_number(const Block &b);
     void tool_change_moves();
@@ -280,6 +284,7 @@ private:
                       double &c1, double &c2);
     void arc_center_ijk(const Block &b, double s1, double s2, double e1, double e2, double &c1,
                         double &c2);
+    int arc_turns(const Block &b) const;
     double arc_length(double s1, double s2, double e1, double e2, double c1, double c2,
                       int rotation, double axial) const;
     void probe_result();
@@ -309,6 +314,8 @@ private:
     void emit_g5x();
     void emit_g92();
     void g92_family(int code, const Block &b);
+    void g92_set(int code, const Block &b);
+    int g10_system(const Block &b) const;
     void apply_tlo(const Pose &tlo);
     void convert_units(CanonUnits to);
     int find_tool_index(int toolno) const;
@@ -318,6 +325,7 @@ private:
     void modal_save(bool autorestore);
     void modal_restore(const SavedModal &m);
     void modal_restore_block(const SavedModal &m, Block &b) const;
+    void restore_modal_codes(const SavedModal &m, Block &b) const;
     void restore_coolant(const SavedModal &m, bool first);
 
     // REMAP= support (remap.cc)
