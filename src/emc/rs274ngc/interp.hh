@@ -52,6 +52,12 @@ struct RemapDef {
     std::string ngc;               // subroutine name
 };
 
+// Position after the block-delete slash and line number of a normalized line.
+size_t skip_line_number(const std::string &t);
+
+// The label after an 'o' of a normalized line ("<name>" or digits); false when neither.
+bool peek_label(const std::string &t, size_t &pos, std::string &name);
+
 // "<name>" for a named O-word label, the number for a numbered one.
 std::string label_text(const std::string &name);
 
@@ -253,6 +259,7 @@ public:
     void do_spindle(Block &b);
     void do_coolant(Block &b);
     void do_overrides(Block &b);
+    void set_switch(bool &state, bool on, void (Canon::*enable)(), void (Canon::*disable)());
     void do_user_m(Block &b);
     void do_dwell(Block &b);
     void do_plane(Block &b);
@@ -263,6 +270,7 @@ public:
     double dynamic_comp_radius(const Block &b, int &g, int &orient) const;
     double tool_comp_radius(const Block &b, int &orient) const;
     int h_word_index(const Block &b) const;
+    Pose tlo_words(const Block &b, int g) const;
     void do_tool_length(Block &b);
     void do_coord_system(Block &b);
     void do_path_control(Block &b);
@@ -272,6 +280,8 @@ public:
     void do_g92_family(Block &b);
     bool do_motion(Block &b);
     bool nonmodal_motion(const Block &b);
+    bool motion_runs(const Block &b);
+    bool cycle_or_cancel(Block &b, int m);
     InterpStatus do_stop(Block &b);
 
 
@@ -307,6 +317,7 @@ private:
     Pose offsets_for_point(const Block &b, Pose q, const Pose &shift, Pose old, double rot) const;
     void g10_tool(const Block &b, int l);
     void g10_reload_tools();
+    int g10_tool_index(const Block &b, int l) const;
     Pose tool_pose(const CanonTool &t) const;
     Pose g10_tool_offsets(const Block &b, int l, const CanonTool &t) const;
     void store_tool_entry(int index, const CanonTool &t);
@@ -344,6 +355,9 @@ private:
     void write_var_file();
     bool predefined(const std::string &name, double &v);
     bool hal_value(const std::string &name, double &v);
+    bool predefined_position(const std::string &name, double &v) const;
+    bool interp_value(const std::string &name, double &v) const;
+    bool ini_value(const std::string &name, double &v);
 
     InterpState s_;
     Canon &real_out_;

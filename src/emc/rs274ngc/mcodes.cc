@@ -140,22 +140,23 @@ void Interp::do_overrides(Block &b)
     if (s_.comp_side != CANON_SIDE_OFF)
         throw InterpError("Cannot change overrides with cutter radius compensation on");
     bool on = m == 48 || (m != 49 && (!b.word('p') || b.value('p') != 0.0));
-    if (m == 48 || m == 49 || m == 50) {
-        s_.feed_override = on;
-        on ? out().enable_feed_override() : out().disable_feed_override();
-    }
-    if (m == 48 || m == 49 || m == 51) {
+    bool both = m == 48 || m == 49;
+    if (both || m == 50) set_switch(s_.feed_override, on, &Canon::enable_feed_override,
+                                    &Canon::disable_feed_override);
+    if (both || m == 51) {
         s_.speed_override = on;
         on ? out().enable_speed_override(0) : out().disable_speed_override(0);
     }
-    if (m == 52) {
-        s_.adaptive_feed = on;
-        on ? out().enable_adaptive_feed() : out().disable_adaptive_feed();
-    }
-    if (m == 53) {
-        s_.feed_hold = on;
-        on ? out().enable_feed_hold() : out().disable_feed_hold();
-    }
+    if (m == 52) set_switch(s_.adaptive_feed, on, &Canon::enable_adaptive_feed,
+                            &Canon::disable_adaptive_feed);
+    if (m == 53) set_switch(s_.feed_hold, on, &Canon::enable_feed_hold, &Canon::disable_feed_hold);
+}
+
+// Set an override switch and emit its enable or disable call.
+void Interp::set_switch(bool &state, bool on, void (Canon::*enable)(), void (Canon::*disable)())
+{
+    state = on;
+    (out().*(on ? enable : disable))();
 }
 
 // M100-M199 (step 14): run by the user-M handler; without one (rs274) they are unknown.

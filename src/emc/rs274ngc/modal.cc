@@ -136,22 +136,28 @@ void Interp::do_tool_length(Block &b)
     if (g == -1) return;
     if (s_.comp_side != CANON_SIDE_OFF)
         throw InterpError("Cannot change tool offset with cutter radius compensation on");
+    Pose tlo{};
+    if (g == 430) tlo = tool_pose(s_.tools[h_word_index(b)]);
+    if (g == 431 || g == 432) tlo = tlo_words(b, g);
+    s_.tlo_code = g;
+    apply_tlo(tlo);
+}
+
+// G43.1 (axis words replace) and G43.2 (H tool or axis words add to) the active offset.
+Pose Interp::tlo_words(const Block &b, int g) const
+{
     static const char axes[] = "xyzabc";
     bool any = false;
     for (int i = 0; i < 6; i++) any = any || b.word(axes[i]);
-    Pose tlo{};
-    if (g == 430) tlo = tool_pose(s_.tools[h_word_index(b)]);
-    if (g == 431 || g == 432) tlo = s_.tool_offset;
     if (g == 432 && any && b.word('h')) throw InterpError("G43.2: Can not have both H and axis words");
+    Pose tlo = s_.tool_offset;
     Pose add = g == 432 && !any ? tool_pose(s_.tools[h_word_index(b)]) : Pose{};
     for (int i = 0; i < 6; i++) {
         if (!b.word(axes[i])) continue;
-        if (g == 431) tlo[i] = b.value(axes[i]);
-        if (g == 432) add[i] = b.value(axes[i]);
+        (g == 431 ? tlo[i] : add[i]) = b.value(axes[i]);
     }
     for (int i = 0; i < AX_COUNT; i++) tlo[i] += add[i];
-    s_.tlo_code = g;
-    apply_tlo(tlo);
+    return tlo;
 }
 
 // Make tlo the active tool length offset: adjust the position, emit, update #5081-#5089.

@@ -45,27 +45,38 @@ const MotionHandler MOTION_HANDLERS[] = {
     {52, 52, &Interp::nurbs_point, false},    {50, 51, &Interp::move_spline, false},
 };
 
+// G80 and the canned and lathe cycles; true when m is one of them.
+bool Interp::cycle_or_cancel(Block &b, int m)
+{
+    if (m == 800) {
+        out().comment("interpreter: motion mode set to none");
+        s_.cycle_last = -1;
+        return true;
+    }
+    bool cycle = m == 730 || m == 740 || (m >= 810 && m <= 890) || m == 760 || (m >= 700 && m <= 722);
+    if (cycle) move_cycle(b);
+    return cycle;
+}
+
+// Takes the block's explicit motion code as the mode; true when a motion runs on this line
+// (an explicit code, or the modal one with axis words that no G43.1/G43.2 consumes).
+bool Interp::motion_runs(const Block &b)
+{
+    int explicit_motion = b.motion();
+    int tl = b.g_modes[GG_TOOL_LENGTH];
+    if (explicit_motion != -1) s_.motion_mode = explicit_motion;
+    return explicit_motion != -1 || (tl != 431 && tl != 432 && any_axis(b));
+}
+
 // Motion step (28); returns true when the block must end with execute-finish.
 bool Interp::do_motion(Block &b)
 {
     INTERP_FRAME();
     if (nonmodal_motion(b)) return false;
-    int explicit_motion = b.motion();
-    int tl = b.g_modes[GG_TOOL_LENGTH];
-    if (explicit_motion == -1 && (tl == 431 || tl == 432)) return false;
-    if (explicit_motion != -1) s_.motion_mode = explicit_motion;
+    if (!motion_runs(b)) return false;
     int m = s_.motion_mode;
-    if (explicit_motion == -1 && !any_axis(b)) return false;
     if (nurbs_open_ && m != 52) throw InterpError("Must close the G5.2 block with G5.3 first");
-    if (m == 800) {
-        out().comment("interpreter: motion mode set to none");
-        s_.cycle_last = -1;
-        return false;
-    }
-    if (m == 730 || m == 740 || (m >= 810 && m <= 890) || m == 760 || (m >= 700 && m <= 722)) {
-        move_cycle(b);
-        return false;
-    }
+    if (cycle_or_cancel(b, m)) return false;
     s_.cycle_last = -1;
     s_.cycle_il_valid = false;
     if (m != 50 && m != 51) spline_continues_ = false;

@@ -21,28 +21,10 @@ bool Interp::peek_oword(const std::string &line, std::string &name, OKind &kind)
         if (c == '(' || c == ';') break;
         if (c != ' ' && c != '\t') t += (char)tolower((unsigned char)c);
     }
-    size_t pos = 0;
-    if (pos < t.size() && t[pos] == '/') pos++;
-    if (pos < t.size() && t[pos] == 'n') {
-        pos++;
-        while (pos < t.size() && (isdigit((unsigned char)t[pos]) || t[pos] == '.')) pos++;
-    }
-    if (pos >= t.size() || t[pos] != 'o') return false;
-    pos++;
-    if (pos < t.size() && t[pos] == '<') {
-        size_t end = t.find('>', pos);
-        if (end == std::string::npos) return false;
-        name = t.substr(pos + 1, end - pos - 1);
-        pos = end + 1;
-    } else {
-        size_t start = pos;
-        while (pos < t.size() && isdigit((unsigned char)t[pos])) pos++;
-        if (pos == start) return false;
-        name = std::to_string(atol(t.c_str() + start));
-    }
+    size_t pos = skip_line_number(t);
+    if (pos >= t.size() || t[pos] != 'o' || !peek_label(t, ++pos, name)) return false;
     size_t start = pos;
     while (pos < t.size() && t[pos] >= 'a' && t[pos] <= 'z') pos++;
-    Block b;
     std::string key = t.substr(start, pos - start);
     static const char *const keys[] = {"", "sub", "endsub", "call", "return", "if", "elseif",
                                        "else", "endif", "while", "endwhile", "do", "break",
@@ -51,6 +33,35 @@ bool Interp::peek_oword(const std::string &line, std::string &name, OKind &kind)
     for (int i = 1; i < 16; i++)
         if (key == keys[i]) kind = (OKind)i;
     return kind != O_NONE;
+}
+
+// Position after the block-delete slash and line number of a normalized line.
+size_t skip_line_number(const std::string &t)
+{
+    size_t pos = 0;
+    if (pos < t.size() && t[pos] == '/') pos++;
+    if (pos < t.size() && t[pos] == 'n') {
+        pos++;
+        while (pos < t.size() && (isdigit((unsigned char)t[pos]) || t[pos] == '.')) pos++;
+    }
+    return pos;
+}
+
+// The label after an 'o' of a normalized line: "<name>" or digits; false when neither.
+bool peek_label(const std::string &t, size_t &pos, std::string &name)
+{
+    if (pos < t.size() && t[pos] == '<') {
+        size_t end = t.find('>', pos);
+        if (end == std::string::npos) return false;
+        name = t.substr(pos + 1, end - pos - 1);
+        pos = end + 1;
+        return true;
+    }
+    size_t start = pos;
+    while (pos < t.size() && isdigit((unsigned char)t[pos])) pos++;
+    if (pos == start) return false;
+    name = std::to_string(atol(t.c_str() + start));
+    return true;
 }
 
 // Start skipping lines until an O-word with this name and one of these kinds.

@@ -154,6 +154,18 @@ Pose Interp::g10_tool_offsets(const Block &b, int l, const CanonTool &t) const
     return offsets_for_point(b, q, shift, old, s_.params[base + 9]);
 }
 
+// The tool-data index a G10 L1/L10/L11 P word names; L1 must set something.
+int Interp::g10_tool_index(const Block &b, int l) const
+{
+    int p = b.word('p') ? clamp_int(b.value('p')) : 0;
+    int index = p > 0 ? find_tool_index(p) : -1;
+    if (index < 0) throw InterpError("P value out of range with G10 L" + std::to_string(l));
+    bool any = b.word('r') || b.word('i') || b.word('j') || b.word('q');
+    for (int i = 0; i < 6; i++) any = any || b.word(AXES[i]);
+    if (!any && l == 1) throw InterpError("G10 L1 without offsets has no effect");
+    return index;
+}
+
 // G10 L0, L1, L10, L11: tool table edits.
 void Interp::g10_tool(const Block &b, int l)
 {
@@ -161,12 +173,7 @@ void Interp::g10_tool(const Block &b, int l)
     if (l == 0) return g10_reload_tools();
     if (s_.comp_side != CANON_SIDE_OFF)
         throw InterpError("Cannot change tool table with cutter radius compensation on");
-    int p = b.word('p') ? clamp_int(b.value('p')) : 0;
-    int index = p > 0 ? find_tool_index(p) : -1;
-    if (index < 0) throw InterpError("P value out of range with G10 L" + std::to_string(l));
-    bool any = b.word('r') || b.word('i') || b.word('j') || b.word('q');
-    for (int i = 0; i < 6; i++) any = any || b.word(AXES[i]);
-    if (!any && l == 1) throw InterpError("G10 L1 without offsets has no effect");
+    int index = g10_tool_index(b, l);
     CanonTool t = s_.tools[index];
     Pose offs = g10_tool_offsets(b, l, t);
     double k = s_.machine_to_program();
