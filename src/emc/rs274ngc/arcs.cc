@@ -1,4 +1,4 @@
-// arcs.cc: G2/G3 arcs and helices: center and radius formats with LinuxCNC's tolerances (gcode.md §11).
+// arcs.cc: G2/G3 arcs and helices: center and radius formats with LinuxCNC's tolerances (LinuxCNC's arc rules).
 #include <cmath>
 #include <cstdio>
 

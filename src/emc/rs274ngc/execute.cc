@@ -1,4 +1,4 @@
-// execute.cc: executes one block in the order of gcode.md §3 and checks word usage (§2).
+// execute.cc: executes one block in LinuxCNC's order of execution and checks word usage.
 #include <cmath>
 
 #include "interp.hh"
@@ -20,14 +20,14 @@ bool g0_uses_axes(int g)
 
 } // namespace
 
-// One step of the execution order (gcode.md §3); `m_group` names the M group a remapped
+// One step of the execution order (LinuxCNC's order of execution); `m_group` names the M group a remapped
 // M code of the block runs at instead of the built-in step (-1: no M group).
 struct ExecStep {
     void (Interp::*run)(Block &);
     int m_group;
 };
 
-// The execution order of gcode.md §3, steps 3 to 29.
+// LinuxCNC's order of execution (comment through stop).
 const ExecStep EXEC_STEPS[] = {
     {&Interp::step_comment, -1},     {&Interp::do_spindle_mode, -1},
     {&Interp::do_feed_mode, -1},     {&Interp::do_feed_rate, -1},
@@ -106,7 +106,7 @@ void Interp::step_stop(Block &b)
     b.status = do_stop(b);
 }
 
-// Check axis-word and modal-group combination rules of gcode.md §2 and words without users.
+// Check axis-word and modal-group combination rules of LinuxCNC's modal groups and words without users.
 void Interp::check_block(Block &b)
 {
     INTERP_FRAME();

@@ -1,4 +1,4 @@
-// expr.cc: real values of a normalized line: numbers, parameters, [expressions] and functions (gcode.md §7).
+// expr.cc: real values of a normalized line: numbers, parameters, [expressions] and functions (LinuxCNC's expression rules).
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
@@ -62,7 +62,7 @@ double apply_unary(const std::string &name, double v)
     throw InterpError("Unknown word starting with " + name.substr(0, 1));
 }
 
-// the binary operators (gcode.md §7): precedence level and evaluation, indexed by BinOp
+// the binary operators (LinuxCNC's expression rules): precedence level and evaluation, indexed by BinOp
 double op_pow(double a, double b)
 {
     if (a < 0.0 && std::floor(b) != b)
@@ -99,7 +99,7 @@ const struct { int level; double (*fn)(double, double); } BINARY[] = {
     {1, op_or},   {1, op_xor},
 };
 
-// precedence of a binary operator (gcode.md §7 levels); OP_END is 0
+// precedence of a binary operator (LinuxCNC's levels); OP_END is 0
 int precedence(BinOp op)
 {
     return BINARY[op].level;

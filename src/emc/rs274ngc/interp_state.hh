@@ -17,7 +17,7 @@ enum AxisIndex { AX_X = 0, AX_Y, AX_Z, AX_A, AX_B, AX_C, AX_U, AX_V, AX_W, AX_CO
 // Nine axis values X Y Z A B C U V W.
 using Pose = std::array<double, AX_COUNT>;
 
-// An interpreter error; what() is the exact user-visible text (gcode.md).
+// An interpreter error; what() is the exact user-visible text (LinuxCNC's texts).
 class InterpError : public std::runtime_error {
 public:
     explicit InterpError(const std::string &msg) : std::runtime_error(msg) {}
@@ -78,7 +78,7 @@ constexpr int SPINDLE_COUNT = 8;
 constexpr int PARAM_G28_HOME = 5161;
 constexpr int PARAM_G30_HOME = 5181;
 
-// Settings read once from the INI file (ini.md [RS274NGC]) or defaulted.
+// Settings read once from the INI file ([RS274NGC] and friends) or defaulted.
 struct InterpSettings {
     double g73_peck_clearance = -1;   // <0: default by initial units
     double g83_peck_clearance = -1;

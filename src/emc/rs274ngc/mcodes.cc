@@ -184,7 +184,7 @@ InterpStatus Interp::do_stop(Block &b)
     return INTERP_EXIT;
 }
 
-// Program end resets (gcode.md §5 "M2/M30 resets").
+// Program end resets (LinuxCNC's M2/M30 resets).
 void Interp::m2_reset(int code)
 {
     INTERP_FRAME();

@@ -1,4 +1,4 @@
-// parse.cc: turns one source line into an evaluated Block (gcode.md §1, §2).
+// parse.cc: turns one source line into an evaluated Block (LinuxCNC's line syntax and modal groups).
 #include <algorithm>
 #include <cctype>
 #include <iterator>

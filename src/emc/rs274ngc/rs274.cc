@@ -1,4 +1,4 @@
-// rs274.cc: the standalone interpreter program: runs a G-code file and prints canon calls (canon.md §3).
+// rs274.cc: the standalone interpreter program: runs a G-code file and prints canon calls (LinuxCNC rs274's output).
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>

@@ -1,4 +1,4 @@
-// tools.cc: T, M6, M61, G10 L0/L1/L10/L11 and tool-table lookups (gcode.md §13).
+// tools.cc: T, M6, M61, G10 L0/L1/L10/L11 and tool-table lookups (LinuxCNC's tool rules).
 #include <cmath>
 
 #include "interp.hh"

@@ -1,4 +1,4 @@
-// tooltable.cc: reads a LinuxCNC tool table file (canon.md §3 "Tool table file format").
+// tooltable.cc: reads a LinuxCNC tool table file (LinuxCNC's tool table format).
 #include "tooltable.hh"
 
 #include <cctype>

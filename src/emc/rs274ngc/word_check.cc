@@ -1,4 +1,4 @@
-// word_check.cc: every letter word on a line needs a code that uses it (gcode.md §4 "A letter
+// word_check.cc: every letter word on a line needs a code that uses it (LinuxCNC's "A letter
 // without a user"), one rule per letter.
 #include "interp.hh"
 

@@ -1,4 +1,4 @@
-// canned_cycle.cc: one G73/G74/G81..G89 block: word checks, sticky words, positioning, repeats (gcode.md §9).
+// canned_cycle.cc: one G73/G74/G81..G89 block: word checks, sticky words, positioning, repeats (LinuxCNC's canned cycles).
 #include <cmath>
 #include <string>
 

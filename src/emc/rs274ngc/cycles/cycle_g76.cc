@@ -1,4 +1,4 @@
-// cycle_g76.cc: G76 multi-pass threading cycle in the XZ plane (gcode.md §9 "G76 threading").
+// cycle_g76.cc: G76 multi-pass threading cycle in the XZ plane (LinuxCNC's G76).
 #include <cmath>
 #include <string>
 
