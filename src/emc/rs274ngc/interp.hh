@@ -305,6 +305,7 @@ private:
 
     // splines (spline.cc)
     void check_spline(const Block &b);
+    void check_nurbs(const Block &b, int first, int second);
     spline::Cubic spline_curve(const Block &b, int mode, const Pose &end);
     void nurbs_close(const Block &b);
     Pose machine_to_program_pose(const Pose &m) const;
