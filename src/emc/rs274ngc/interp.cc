@@ -243,7 +243,7 @@ InterpStatus Interp::run_line(const std::string &raw)
         if (b.block_delete && block_delete_) return INTERP_OK;
         return execute_block(b);
     } catch (const InterpError &e) {
-            error_ = e.what();
+        error_ = e.what();
         auto at = dynamic_cast<const InterpErrorAt *>(&e);
         error_line_ = at ? at->line() : raw;
         unwind_after_error();

@@ -147,6 +147,7 @@ public:
     void set_task(bool t) override { task_ = t; }
     // ProfileSource: evaluated blocks of a subroutine
     std::vector<Block> sub_blocks(const std::string &name) override;
+    void profile_line(std::vector<Block> &blocks, const std::string &name);
 
     // --- parsing (parse.cc, expr.cc) ---
     void parse_line(const std::string &raw, Block &b);
@@ -394,6 +395,7 @@ private:
     std::string ini_path_;
     std::map<int, RemapDef> g_remaps_, m_remaps_;
     int remap_level_ = 0;
+    bool reading_profile_ = false;   // parsing a lathe-cycle profile: U and W are incremental X and Z
 };
 
 #endif

@@ -254,7 +254,7 @@ void Interp::move_cycle(Block &b)
 {
     INTERP_FRAME();
     int m = s_.motion_mode;
-    if (s_.comp_side != CANON_SIDE_OFF)
+    if (s_.comp_side != CANON_SIDE_OFF && m != 700)
         throw InterpError("Cannot use canned cycles with cutter radius compensation");
     if (m == 760) {
         if (!cycles::execute_g76) throw InterpError("G76 threading cycle not supported");

@@ -228,7 +228,9 @@ void Interp::parse_word(char c, const std::string &t, size_t &pos, Block &b)
     INTERP_FRAME();
     if (c == 'g') { parse_g(t, pos, b); return; }
     if (c == 'm') { parse_m(t, pos, b); return; }
-    if (!word_letter(c)) throw InterpError(std::string("Bad character '") + c + "' used");
+    bool profile_uw = reading_profile_ && (c == 'u' || c == 'w');
+    if (!word_letter(c) && !profile_uw)
+        throw InterpError(std::string("Bad character '") + c + "' used");
     pos++;
     bool *have;
     double *value;
