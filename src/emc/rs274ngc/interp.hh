@@ -145,6 +145,7 @@ public:
     std::string find_user_m(int m) const;
     // mark the process as task (#<_task> = 1)
     void set_task(bool t) override { task_ = t; }
+    void set_loop_on_main_m99(bool on) override { loop_main_m99_ = on; }
     // ProfileSource: evaluated blocks of a subroutine
     std::vector<Block> sub_blocks(const std::string &name) override;
     void profile_line(std::vector<Block> &blocks, const std::string &name);
@@ -218,6 +219,7 @@ private:
     InterpStatus fanuc_label(Block &b);
     void fanuc_call(Block &b);
     bool fanuc_return();
+    bool restart_main();
     std::string flow_error(const std::string &what, const Block &b) const;
     void flow_fail(const std::string &what, const Block &b);
 
@@ -380,6 +382,7 @@ private:
     int skip_start_ = 0;
     bool block_delete_ = false;
     bool task_ = false;
+    bool loop_main_m99_ = false;     // M99 in the main program restarts it (task)
     bool file_open_ = false;
     bool eof_error_ = false;
     double value_ = 0, value_returned_ = 0;

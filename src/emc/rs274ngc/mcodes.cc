@@ -180,8 +180,21 @@ InterpStatus Interp::do_stop(Block &b)
     if (m == 60) { out().pallet_shuttle(); out().program_stop(); }
     if (m == 0 || m == 1 || m == 60) return INTERP_OK;
     if (m == 99 && fanuc_return()) return INTERP_OK;
+    if (m == 99 && restart_main()) return INTERP_OK;
     m2_reset(m);
     return INTERP_EXIT;
+}
+
+// M99 in the main program under task: continue at its first line (after an opening '%'), the
+// modal state kept; false when looping is off or the program is MDI.
+bool Interp::restart_main()
+{
+    INTERP_FRAME();
+    CallFrame &f = calls_.front();
+    if (!loop_main_m99_ || calls_.size() != 1 || !f.file) return false;
+    f.pos = f.file->percent ? f.file->percent_line + 1 : 0;
+    f.flow.clear();
+    return true;
 }
 
 // Program end resets (LinuxCNC's M2/M30 resets).
