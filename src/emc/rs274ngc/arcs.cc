@@ -43,13 +43,17 @@ void Interp::arc_center_r(const Block &b, double s1, double s2, double e1, doubl
     double tol = s_.units == CANON_UNITS_INCHES ? 0.00005 : 0.00127;
     if (s1 == e1 && s2 == e2) throw InterpError("Current point same as end point of arc");
     double m1 = (s1 + e1) / 2.0, m2 = (s2 + e2) / 2.0;
-    double half = std::hypot(e1 - m1, e2 - m2);
+    double half = std::hypot(m1 - e1, m2 - e2);
     double ar = std::fabs(r);
     if (half - ar > tol) throw InterpError("Arc radius too small to reach end point");
     if (half / ar > 1.0 - 1e-12) half = ar;
     bool right = (mode == 20 && r > 0) || (mode == 30 && r < 0);
-    double dir = std::atan2(e2 - s2, e1 - s1) + (right ? -M_PI_2 : M_PI_2);
-    double dist = std::sqrt(std::max(0.0, ar * ar - half * half));
+    // LinuxCNC's arithmetic to the last bit: the quarter turn added in long double, the center
+    // distance as R cos(asin(half / R)) (a semicircle's center is then off the chord by about
+    // 1e-17, which decides the sign of a center coordinate printed as zero)
+    long double quarter = right ? -M_PI_2l : M_PI_2l;
+    double dir = (double)(std::atan2(e2 - s2, e1 - s1) + quarter);
+    double dist = ar * std::cos(std::asin(half / ar));
     c1 = m1 + dist * std::cos(dir);
     c2 = m2 + dist * std::sin(dir);
 }

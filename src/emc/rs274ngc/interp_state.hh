@@ -48,7 +48,7 @@ inline int clamp_int(double v)
 inline void rotate_xy(double &x, double &y, double deg)
 {
     if (deg == 0.0) return;
-    double t = deg * M_PI / 180.0, c = std::cos(t), s = std::sin(t);
+    double t = deg * (M_PI / 180.0), c = std::cos(t), s = std::sin(t);
     double rx = x * c - y * s, ry = x * s + y * c;
     x = rx;
     y = ry;

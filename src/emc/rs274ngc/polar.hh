@@ -9,6 +9,8 @@
 
 // The XY point of a block's polar words, from the current point (x, y) of the XY plane about
 // the program origin: G90 replaces the radius/angle given, G91 adds them (error at the origin).
+// Degrees are multiplied by the one factor pi / 180, as LinuxCNC does: the radians then agree to
+// the last bit, so a coordinate that comes out as about zero keeps the sign LinuxCNC prints.
 inline void polar_point(const Block &b, bool incremental, double &x, double &y)
 {
     double r = std::hypot(x, y);
@@ -18,10 +20,10 @@ inline void polar_point(const Block &b, bool incremental, double &x, double &y)
             throw InterpError("Incremental motion with polar coordinates is indeterminate when "
                               "at the origin");
         if (b.has_polar_radius) r += b.polar_radius;
-        if (b.has_polar_angle) a += b.polar_angle * M_PI / 180.0;
+        if (b.has_polar_angle) a += b.polar_angle * (M_PI / 180.0);
     } else {
         if (b.has_polar_radius) r = b.polar_radius;
-        if (b.has_polar_angle) a = b.polar_angle * M_PI / 180.0;
+        if (b.has_polar_angle) a = b.polar_angle * (M_PI / 180.0);
     }
     x = r * std::cos(a);
     y = r * std::sin(a);

@@ -67,7 +67,7 @@ static Thread read_thread(const InterpState &s, const Block &b)
 static void read_thread_options(const Block &b, Thread &t)
 {
     t.degression = b.word('r') ? std::max(b.value('r'), 1.0) : 1.0;
-    t.tan_angle = b.word('q') ? std::tan(b.value('q') * M_PI / 180.0) : 0.0;
+    t.tan_angle = b.word('q') ? std::tan(b.value('q') * (M_PI / 180.0)) : 0.0;
     t.spring_passes = b.word('h') ? (int)std::lround(b.value('h')) : 0;
     if (t.spring_passes < 0 || t.spring_passes > MAX_PASSES)
         throw InterpError("In G76, H must be 0 to " + std::to_string(MAX_PASSES));
