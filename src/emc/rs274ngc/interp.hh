@@ -257,6 +257,7 @@ public:
     void modal_state_code(int m);
     bool do_tool_change(Block &b);
     void set_tool_number(const Block &b);
+    void load_empty_spindle();
     void tool_change_moves();
     void reapply_tool_length();
     void do_spindle(Block &b);

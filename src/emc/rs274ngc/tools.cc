@@ -56,6 +56,7 @@ bool Interp::do_tool_change(Block &b)
     out().change_tool();
     int index = s_.selected_pocket;
     if (index > 0 && index < (int)s_.tools.size()) s_.tools[0] = s_.tools[index];
+    if (index == 0) load_empty_spindle();
     s_.current_pocket = index;
     if (s_.settings.retain_g43 && s_.tlo_code == 430) reapply_tool_length();
     return true;
@@ -72,7 +73,18 @@ void Interp::set_tool_number(const Block &b)
         throw InterpError("Requested tool " + std::to_string(q) + " not found in the tool table");
     out().change_tool_number(index);
     s_.current_pocket = index;
-    s_.tools[0].toolno = q;
+    // the spindle slot takes the tool's whole entry (G43 without H and #5400-#5413 use it);
+    // M61 Q0 empties it
+    if (index > 0) s_.tools[0] = s_.tools[index];
+    else load_empty_spindle();
+}
+
+// T0 M6 or M61 Q0: the spindle holds no tool (number 0, no offsets).
+void Interp::load_empty_spindle()
+{
+    CanonTool none;
+    none.toolno = 0;
+    s_.tools[0] = none;
 }
 
 // Spindle stop, quill-up move and G30 move that the INI settings ask for before an M6.
