@@ -66,11 +66,11 @@ static int alias_module_output(hm2_board_t *hm2, int io)
     const hm2_pin_t *p = &hm2->pin[io];
     const char *b = hm2->llio->name;
     const char *module = hm2_gtag_hal_name(p->sec_tag);
-    char suffix[32], unit[24], param[HAL_NAME_LEN + 1], alias[HAL_NAME_LEN + 1];
+    char buf[32], unit[24], param[HAL_NAME_LEN + 1], alias[HAL_NAME_LEN + 1];
     int total, k = same_function_index(hm2, io, &total);
     if (!module)
         return 0;
-    hm2_pin_alias_name(p->sec_tag, p->sec_pin, suffix, sizeof(suffix));
+    const char *suffix = hm2_pin_alias_name(p->sec_tag, p->sec_pin, buf, sizeof(buf));
     if (p->sec_unit & HM2_UNIT_GLOBAL_FLAG)
         unit[0] = '\0';
     else
