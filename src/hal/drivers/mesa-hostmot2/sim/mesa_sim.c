@@ -142,6 +142,9 @@ static int open_socket(const sim_options_t *o)
         return -1;
     }
     int fd = socket(AF_INET, SOCK_DGRAM | SOCK_CLOEXEC, 0);
+    int on = 1;
+    if (fd >= 0)
+        setsockopt(fd, SOL_SOCKET, SO_TIMESTAMPNS, &on, sizeof(on));
     if (fd < 0 || bind(fd, (struct sockaddr *)&a, sizeof(a)) < 0) {
         fprintf(stderr, "mesa-sim: cannot bind %s:%d: %s\n", o->ip, o->port, strerror(errno));
         if (fd >= 0)
@@ -151,27 +154,65 @@ static int open_socket(const sim_options_t *o)
     return fd;
 }
 
+/* Kernel receive time (CLOCK_REALTIME) of a datagram as a monotonic time. */
+static long long arrival_time(struct msghdr *msg)
+{
+    struct timespec real, mono;
+    for (struct cmsghdr *cm = CMSG_FIRSTHDR(msg); cm; cm = CMSG_NXTHDR(msg, cm)) {
+        if (cm->cmsg_level != SOL_SOCKET || cm->cmsg_type != SCM_TIMESTAMPNS)
+            continue;
+        struct timespec ts;
+        memcpy(&ts, CMSG_DATA(cm), sizeof(ts));
+        clock_gettime(CLOCK_REALTIME, &real);
+        clock_gettime(CLOCK_MONOTONIC, &mono);
+        long long age = (real.tv_sec - ts.tv_sec) * 1000000000LL + (real.tv_nsec - ts.tv_nsec);
+        return mono.tv_sec * 1000000000LL + mono.tv_nsec - (age > 0 ? age : 0);
+    }
+    return now_ns();
+}
+
+/* One datagram with the time it arrived, so a descheduled simulator still sees when pets came. */
+static ssize_t receive_stamped(int fd, uint8_t *buf, size_t cap, struct sockaddr_in *from, long long *at)
+{
+    char control[256];
+    struct iovec iov = {buf, cap};
+    struct msghdr msg = {0};
+    msg.msg_name = from;
+    msg.msg_namelen = sizeof(*from);
+    msg.msg_iov = &iov;
+    msg.msg_iovlen = 1;
+    msg.msg_control = control;
+    msg.msg_controllen = sizeof(control);
+    ssize_t n = recvmsg(fd, &msg, MSG_DONTWAIT);
+    if (n >= 0)
+        *at = arrival_time(&msg);
+    return n;
+}
+
 /* Answer one datagram (with the injected faults). */
-static void serve_datagram(sim_card_t *c, int fd)
+static bool serve_datagram(sim_card_t *c, int fd)
 {
     uint8_t in[2048], out[LBP16_MAX_PACKET + 64];
     struct sockaddr_in from;
     socklen_t fromlen = sizeof(from);
-    ssize_t n = recvfrom(fd, in, sizeof(in), 0, (struct sockaddr *)&from, &fromlen);
-    if (n <= 0)
-        return;
+    long long arrival;
+    ssize_t n = receive_stamped(fd, in, sizeof(in), &from, &arrival);
+    if (n < 0)
+        return false;
+    fromlen = sizeof(from);
+    sim_advance(c, arrival);
     c->rx_packets++;
     if (c->paused) {
         c->dropped++;
-        return;
+        return true;
     }
     int reply = sim_handle_datagram(c, in, (int)n, out, LBP16_MAX_PACKET);
     if (reply <= 0)
-        return;
+        return true;
     if (c->drop_replies > 0) {
         c->drop_replies--;
         c->dropped++;
-        return;
+        return true;
     }
     if (c->garble_replies > 0) {
         c->garble_replies--;
@@ -186,6 +227,7 @@ static void serve_datagram(sim_card_t *c, int fd)
     }
     if (sendto(fd, out, reply, 0, (struct sockaddr *)&from, fromlen) == reply)
         c->tx_packets++;
+    return true;
 }
 
 /* Read available stdin bytes and run complete lines; 1 = quit. */
@@ -247,9 +289,10 @@ int main(int argc, char **argv)
     while (!stop_requested) {
         struct pollfd p[2] = {{fd, POLLIN, 0}, {0, POLLIN, 0}};
         int r = poll(p, stdin_open ? 2 : 1, TICK_MS);
-        sim_advance(&card, now_ns());
         if (r > 0 && (p[0].revents & POLLIN))
-            serve_datagram(&card, fd);
+            while (serve_datagram(&card, fd))
+                ;
+        sim_advance(&card, now_ns());
         if (r > 0 && stdin_open && (p[1].revents & (POLLIN | POLLHUP)) &&
             serve_stdin(&card, line, &used, &stdin_open))
             break;
