@@ -15,7 +15,7 @@ halcmd start
 wait_until "stepgen step pin driven (low) after the first write" io_is 0 0
 wait_until "gpio 17 drives high" io_is 17 1
 wait_until "gpio 18 drives low" io_is 18 0
-check "an output's in follows its level" pin_is $B.gpio.017.in TRUE
+wait_until "an output's in follows its level" pin_is $B.gpio.017.in TRUE
 halcmd setp $B.gpio.017.out 0
 wait_until "gpio 17 follows out to low" io_is 17 0
 halcmd setp $B.gpio.017.invert_output 1

@@ -160,7 +160,7 @@ int hm2_connector_pin_number(hm2_board_t *hm2, int io);
 
 /* ---- the cycle (hm2_cycle.c) ---- */
 int hm2_export_functs(hm2_board_t *hm2);
-void hm2_force_write(hm2_board_t *hm2);
+void hm2_force_write(hm2_board_t *hm2, bool clear_bite);
 void hm2_print_modules(hm2_board_t *hm2);
 void hm2_cleanup_modules(hm2_board_t *hm2);
 

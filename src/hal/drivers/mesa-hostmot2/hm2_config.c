@@ -30,12 +30,12 @@ void hm2_config_defaults(hm2_config_t *cfg)
     memset(cfg->sserial_modes, '0', sizeof(cfg->sserial_modes));
 }
 
-/* firmware=NAME (at most 30 characters). */
+/* firmware=NAME (its length is checked only by boards that can be programmed). */
 static int apply_firmware(hm2_config_t *cfg, const char *token, const char *value, char *err, int errlen)
 {
     (void)token;
-    if (strlen(value) > HM2_FIRMWARE_NAME_MAX) {
-        rtapi_snprintf(err, errlen, "requested firmware name '%s' is too long (max length is %d)",
+    if (strlen(value) >= HM2_FIRMWARE_BUF) {
+        rtapi_snprintf(err, errlen, "requested firmware name '%.40s...' is too long (max length is %d)",
                        value, HM2_FIRMWARE_NAME_MAX);
         return -EINVAL;
     }

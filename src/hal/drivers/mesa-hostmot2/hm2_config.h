@@ -4,7 +4,8 @@
 
 #include <stdbool.h>
 
-#define HM2_FIRMWARE_NAME_MAX 30
+#define HM2_FIRMWARE_NAME_MAX 30      /* longest name a programmable board accepts */
+#define HM2_FIRMWARE_BUF 256
 #define HM2_SSERIAL_MAX_PORTS 4
 #define HM2_SSERIAL_MAX_CHANNELS 8
 #define HM2_ABSENC_MAX_CHANNELS 32
@@ -19,7 +20,7 @@ typedef struct {
 
 /* Every setting of a config string; counts are -1 for "all the firmware has". */
 typedef struct {
-    char firmware[HM2_FIRMWARE_NAME_MAX + 1];
+    char firmware[HM2_FIRMWARE_BUF];
     bool have_firmware;
     int num_encoders, num_stepgens, stepgen_width, num_pwmgens, num_3pwmgens;
     int num_rcpwmgens, num_resolvers, num_inms, num_inmuxs, num_outms;

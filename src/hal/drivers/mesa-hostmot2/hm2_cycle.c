@@ -58,12 +58,14 @@ static void read_funct(void *arg, long period)
     process_reads(hm2, period);
 }
 
-/* Write every module's configuration registers (load, recovery after a bite or lost packet). */
-void hm2_force_write(hm2_board_t *hm2)
+/* Write every module's configuration registers (load, recovery after a bite or lost packet).
+   Only clear_bite clears a watchdog bite: a lost packet must not re-enable outputs behind the
+   user's back (the bite is reported and waits for has_bit FALSE). */
+void hm2_force_write(hm2_board_t *hm2, bool clear_bite)
 {
     if (hm2->llio->ops->set_force_enqueue)
         hm2->llio->ops->set_force_enqueue(hm2->llio, true);
-    hm2_watchdog_force_write(hm2);
+    hm2_watchdog_force_write(hm2, clear_bite);
     hm2_ioport_force_write(hm2);
     hm2_encoder_force_write(hm2);
     hm2_stepgen_force_write(hm2);
@@ -90,7 +92,7 @@ static void recover_if_needed(hm2_board_t *hm2)
         if (hm2->watchdog.num_instances && *hm2->watchdog.hal->has_bit)
             return;
         HM2_PRINT(hm2, "trying to recover from IO error or Watchdog bite\n");
-        hm2_force_write(hm2);
+        hm2_force_write(hm2, true);
         hm2->needs_reset = false;
         hm2->needs_soft_reset = false;
         if (*hm2->llio->io_error)
@@ -100,7 +102,7 @@ static void recover_if_needed(hm2_board_t *hm2)
         return;
     }
     if (hm2->needs_soft_reset) {
-        hm2_force_write(hm2);
+        hm2_force_write(hm2, false);
         hm2->needs_soft_reset = false;
     }
 }

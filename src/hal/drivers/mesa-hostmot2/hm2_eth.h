@@ -51,6 +51,7 @@ typedef struct {
     bool arp_pinned;
     bool force_enqueue, force_enqueue_allowed;
     bool warned_rt_read;
+    bool skip_write_seq_check;      /* after io_error recovery: writes were knowingly not sent */
 
     lbp16_packet_t read_packet, write_packet;
     hm2_eth_read_t queued_reads[HM2_ETH_MAX_QUEUED_READS];

@@ -97,6 +97,11 @@ int hm2_load_firmware(hm2_board_t *hm2)
     char path[512];
     size_t size = 0;
     hm2_bitfile_t bf;
+    if (strlen(hm2->config.firmware) > HM2_FIRMWARE_NAME_MAX) {
+        HM2_ERR(hm2, "requested firmware name '%s' is too long (max length is %d)\n",
+                hm2->config.firmware, HM2_FIRMWARE_NAME_MAX);
+        return -EINVAL;
+    }
     uint8_t *data = read_firmware(hm2->config.firmware, path, sizeof(path), &size);
     int r = 0;
     if (!data) {

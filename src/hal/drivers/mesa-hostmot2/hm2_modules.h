@@ -273,7 +273,7 @@ int hm2_watchdog_parse_md(struct hm2_board *hm2, int md_index);
 void hm2_watchdog_process_tram_read(struct hm2_board *hm2);
 void hm2_watchdog_prepare_tram_write(struct hm2_board *hm2);
 void hm2_watchdog_write(struct hm2_board *hm2, long period_ns);
-void hm2_watchdog_force_write(struct hm2_board *hm2);
+void hm2_watchdog_force_write(struct hm2_board *hm2, bool clear_bite);
 void hm2_watchdog_bite_now(struct hm2_board *hm2);
 void hm2_watchdog_print_module(struct hm2_board *hm2);
 

@@ -99,7 +99,7 @@ static int discover_board(hm2_board_t *hm2)
 /* Step 11: configuration out, one full read to seed the modules, one write. */
 static int initial_transfer(hm2_board_t *hm2)
 {
-    hm2_force_write(hm2);
+    hm2_force_write(hm2, true);
     if (hm2_tram_queue_reads(hm2) < 0 || hm2_tram_receive_reads(hm2) < 0)
         *hm2->llio->io_error = 1;
     hm2_encoder_tram_init(hm2);

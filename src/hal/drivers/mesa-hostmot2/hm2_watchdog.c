@@ -101,15 +101,16 @@ void hm2_watchdog_write(hm2_board_t *hm2, long period_ns)
     w->written_timeout_ns = w->hal->timeout_ns;
 }
 
-/* Timer, cleared status and a pet: after this the outputs follow the modules again. */
-void hm2_watchdog_force_write(hm2_board_t *hm2)
+/* Timer and a pet; with clear_bite also the status, after which the outputs follow the modules. */
+void hm2_watchdog_force_write(hm2_board_t *hm2, bool clear_bite)
 {
     hm2_watchdog_t *w = &hm2->watchdog;
     if (w->num_instances == 0)
         return;
     uint32_t timer = timer_value(hm2), status = 0, pet = WATCHDOG_PET;
     hm2_write(hm2, w->timer_addr, &timer, 4);
-    hm2_write(hm2, w->status_addr, &status, 4);
+    if (clear_bite)
+        hm2_write(hm2, w->status_addr, &status, 4);
     hm2_write(hm2, w->reset_addr, &pet, 4);
     w->written_enable = w->enable;
     w->written_timeout_ns = w->hal->timeout_ns;
