@@ -9,6 +9,8 @@ BOARD=hm2_7i92.0
 
 # Stops HAL and the simulator, removes the temp dir (EXIT trap).
 hm2_cleanup() {
+    [ -f "$RT_LOG" ] && { echo "---- driver log (tail)"; tail -n 40 "$RT_LOG"; } >&2
+    [ -f "$HM2_TMP/sim.err" ] && { echo "---- sim stderr"; cat "$HM2_TMP/sim.err"; } >&2
     halcmd stop > /dev/null 2>&1
     halcmd unload all > /dev/null 2>&1
     sim_stop
@@ -63,6 +65,20 @@ sim_field() {
     sim "${@:1:$#-1}" | awk -v f="$field" '{ for (i = 1; i < NF; i++) if ($i == f) print $(i + 1) }'
 }
 
+# sim_is FIELD VALUE CMD...: the simulator's answer to CMD has FIELD equal to VALUE.
+sim_is() {
+    local field=$1 value=$2
+    shift 2
+    [ "$(sim_field "$@" "$field")" = "$value" ]
+}
+
+# sim_answer_is LINE CMD...: the simulator answers CMD with exactly LINE.
+sim_answer_is() {
+    local line=$1
+    shift
+    [ "$(sim "$@")" = "$line" ]
+}
+
 # sim_said LINE: the simulator printed exactly LINE.
 sim_said() {
     grep -qx "$1" "$SIM_OUT"
@@ -86,10 +102,12 @@ load_board() {
     halcmd loadrt hm2_eth board_ip="$SIM_IP" ${1:+config="$1"} > "$HM2_TMP/load.out" 2>&1 ||
         { cat "$HM2_TMP/load.out" "$RT_LOG"; exit 1; }
     halcmd loadrt threads name1=servo period1=1000000 || exit 1
-    # a loaded test machine is not realtime: generous reply and watchdog times (HM2_DEFAULTS=1: keep LinuxCNC's)
+    # a loaded test machine is not realtime: generous reply and watchdog times and a high packet error
+    # limit, so stalls of other processes cause no false faults (HM2_DEFAULTS=1: keep LinuxCNC's)
     if [ -z "$HM2_DEFAULTS" ]; then
         halcmd setp $BOARD.packet-read-timeout 20000000
-        halcmd setp $BOARD.watchdog.timeout_ns 100000000
+        halcmd setp $BOARD.watchdog.timeout_ns 1000000000
+        halcmd setp $BOARD.packet-error-limit 1000
     fi
     halcmd addf $BOARD.read-request servo
     halcmd addf $BOARD.read servo
@@ -128,6 +146,13 @@ show_items() {
     funct) halcmd show funct "$2" | awk 'NR > 2 && NF >= 6 { print $4, $6 }' ;;
     *) halcmd show "$1" "$2" | awk 'NR > 2 && NF >= 5 { $1 = ""; sub(/^ /, ""); print }' ;;
     esac
+}
+
+# pins_near PATTERN PIN_A PIN_B TOL: two float pins matched by PATTERN, read in one snapshot, agree.
+pins_near() {
+    halcmd show pin "$1" | awk -v a="$2" -v b="$3" -v t="$4" '
+        $NF == a { va = $(NF - 1); na = 1 } $NF == b { vb = $(NF - 1); nb = 1 }
+        END { d = va - vb; if (d < 0) d = -d; exit !(na && nb && d <= t) }'
 }
 
 # check DESCRIPTION COMMAND...: prints "ok: ..." or "FAILED: ..." (the expected file needs ok).

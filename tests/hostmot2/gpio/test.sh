@@ -43,4 +43,4 @@ wait_until "invert_output of a module pin (stepgen step) inverts it" io_is 0 1
 halcmd setp $B.stepgen.00.step.invert_output 0
 wait_until "its alias B.stepgen.00.step.invert_output is the same param" io_is 0 0
 halcmd setp $B.led.CR01 1
-wait_until "LED CR01 is bit 31 of the LED register" [ "$(sim get led)" = "led 0x80000000" ]
+wait_until "LED CR01 is bit 31 of the LED register" sim_answer_is "led 0x80000000" get led

@@ -8,6 +8,7 @@ B=$BOARD
 io_is() { [ "$(sim_field get io "$1" "$1")" = "$2" ]; }
 total() { halcmd getp $B.packet-error-total; }
 total_at_least() { [ "$(total)" -ge "$1" ]; }
+halcmd setp $B.packet-error-limit 10
 halcmd setp $B.gpio.017.is_output 1
 halcmd setp $B.gpio.017.out 1
 halcmd start

@@ -49,12 +49,12 @@ halcmd setp $B.encoder.01.scale 400
 wait_until "encoder 1 measures 2.5 units/s" pin_near $B.encoder.01.velocity 2.5 0.1
 check "velocity-fb is the command" pin_near $B.stepgen.01.velocity-fb 2.5 1e-9
 check "velocity-rpm is 60 x velocity" rpm_is_60_velocity
-check "encoder 1 and stepgen 1 agree" near "$(halcmd getp $B.encoder.01.position)" \
-    "$(halcmd getp $B.stepgen.01.position-fb)" 0.05
+check "encoder 1 and stepgen 1 agree" pins_near "$B.*.01.position*" $B.encoder.01.position \
+    $B.stepgen.01.position-fb 0.02
 halcmd setp $B.stepgen.01.velocity-cmd -2.5
 wait_until "encoder 1 measures -2.5 units/s" pin_near $B.encoder.01.velocity -2.5 0.1
 halcmd setp $B.stepgen.01.enable 0
-wait_until "disabled stepgen stops the card" [ "$(sim_field get stepgen 1 rate)" = 0 ]
+wait_until "disabled stepgen stops the card" sim_is rate 0 get stepgen 1
 check "disabled stepgen reports velocity 0" pin_is $B.stepgen.01.velocity-fb 0
 wait_until "encoder 1 sees the stop" pin_is $B.encoder.01.velocity 0
 

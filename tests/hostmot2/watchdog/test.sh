@@ -10,7 +10,7 @@ emitted() { sim_field get stepgen 0 emitted; }
 emitting() { local a; a=$(emitted); sleep 0.1; [ "$(emitted)" != "$a" ]; }
 not_emitting() { ! emitting; }
 
-halcmd setp $B.watchdog.timeout_ns 30000000
+halcmd setp $B.watchdog.timeout_ns 200000000
 halcmd setp $B.gpio.017.is_output 1
 halcmd setp $B.gpio.017.out 1
 sim set in 17 0 > /dev/null
@@ -21,7 +21,7 @@ halcmd setp $B.stepgen.00.enable 1
 halcmd start
 wait_until "gpio 17 driven high" io_is 17 1
 wait_until "stepgen 0 emits steps" emitting
-check "watchdog armed with 30 ms at 100 MHz" [ "$(sim get watchdog)" = "watchdog bitten 0 timer 0x002dc6bf" ]
+check "watchdog armed with 200 ms at 100 MHz" [ "$(sim get watchdog)" = "watchdog bitten 0 timer 0x01312cff" ]
 
 halcmd stop
 wait_until "the card's watchdog bites when the cycle stops" sim_said bite

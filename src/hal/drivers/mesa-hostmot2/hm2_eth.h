@@ -65,6 +65,9 @@ typedef struct {
     int comp_id;
 } hm2_eth_board_t;
 
+/* The debug module parameter: print every datagram. */
+extern int debug;
+
 /* Board description for a 16-byte name; NULL = unknown board. */
 const hm2_eth_board_desc_t *hm2_eth_find_board(const char name[LBP16_BOARD_NAME_LEN]);
 

@@ -80,9 +80,24 @@ void hm2_eth_close(hm2_eth_board_t *b)
     b->sockfd = -1;
 }
 
+/* debug=1: every datagram in hex on stdout. */
+static void dump_packet(const hm2_eth_board_t *b, const char *what, const uint8_t *data, int len)
+{
+    char line[3 * 32 + 1];
+    rtapi_print("hm2_eth: %s: %s %d bytes\n", b->ip, what, len);
+    for (int at = 0; at < len; at += 32) {
+        int n = len - at < 32 ? len - at : 32;
+        for (int i = 0; i < n; i++)
+            snprintf(line + 3 * i, 4, " %02x", data[at + i]);
+        rtapi_print("hm2_eth:   %04x:%s\n", at, line);
+    }
+}
+
 /* One datagram; 0 or -errno (reported by the caller). */
 int hm2_eth_send(hm2_eth_board_t *b, const void *data, int len)
 {
+    if (debug)
+        dump_packet(b, "sent", data, len);
     ssize_t n = send(b->sockfd, data, len, 0);
     if (n < 0)
         return -errno;
@@ -112,6 +127,8 @@ int hm2_eth_recv_until(hm2_eth_board_t *b, void *buf, int cap, long long deadlin
         if (r <= 0)
             continue;
         ssize_t n = recv(b->sockfd, buf, cap, MSG_DONTWAIT);
+        if (n >= 0 && debug)
+            dump_packet(b, "received", buf, (int)n);
         if (n >= 0)
             return (int)n;
         if (errno != EAGAIN && errno != EINTR)

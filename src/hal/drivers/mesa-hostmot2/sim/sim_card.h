@@ -20,6 +20,11 @@
 #define SIM_STEPGEN_BASE 0x2000
 #define SIM_ENCODER_BASE 0x3000
 #define SIM_PWMGEN_BASE 0x4000
+#define SIM_UART_TX_BASE 0x6000
+#define SIM_UART_RX_BASE 0x7000
+#define SIM_UART_STRIDE 0x10
+#define SIM_UART_FIFO 16
+#define SIM_MAX_UARTS 2
 #define SIM_REG_STRIDE 0x100
 #define SIM_INST_STRIDE 4
 
@@ -28,7 +33,7 @@ typedef struct {
     const char *name;               /* LBP16 board name, e.g. "7I92" */
     const char *idrom_name;         /* IDROM board name (8 chars) */
     int ports, port_width;
-    int stepgens, encoders, pwmgens;
+    int stepgens, encoders, pwmgens, uarts;
     uint32_t clock_low, clock_high;
     const uint32_t *pins;           /* pin descriptor of each IO (ports * port_width) */
 } sim_board_t;
@@ -61,6 +66,13 @@ typedef struct {
     uint32_t value, mode;
 } sim_pwmgen_t;
 
+/* A UART whose TX is wired to its own RX (loopback). */
+typedef struct {
+    uint8_t fifo[SIM_UART_FIFO];
+    int count;
+    uint32_t tx_bitrate, rx_bitrate, tx_mode, rx_mode;
+} sim_uart_t;
+
 /* The whole card. */
 typedef struct {
     const sim_board_t *board;
@@ -85,6 +97,7 @@ typedef struct {
     sim_pwmgen_t pwmgen[SIM_MAX_PWMGENS];
     uint32_t pwm_dds, pdm_dds, pwm_enable;
     uint32_t led;
+    sim_uart_t uart[SIM_MAX_UARTS];
 
     sim_loop_t loops[SIM_MAX_LOOPS];
     int num_loops;
@@ -114,6 +127,10 @@ double sim_pwm_duty(const sim_card_t *c, int i, int *bits);
 /* ---- registers (sim_regs.c) ---- */
 uint32_t sim_reg_read(sim_card_t *c, uint16_t addr);
 void sim_reg_write(sim_card_t *c, uint16_t addr, uint32_t value);
+
+/* ---- UART (sim_uart.c) ---- */
+bool sim_uart_read(sim_card_t *c, uint16_t addr, uint32_t *value);
+bool sim_uart_write(sim_card_t *c, uint16_t addr, uint32_t value);
 
 /* ---- LBP16 (sim_lbp16.c) ---- */
 int sim_handle_datagram(sim_card_t *c, const uint8_t *in, int len, uint8_t *out, int cap);
