@@ -36,6 +36,7 @@ struct Block {
     bool g80_dropped = false;   // explicit G80 silently dropped next to another motion code
     std::string comment;        // last (...) comment text, case kept
     bool has_comment = false;
+    std::string py_code;        // ";py,..." / ";pyrun,..." / ";pyreload" text after the ';' (embedded Python)
     std::vector<std::pair<int, double>> num_assign;          // #n=value
     std::vector<std::pair<std::string, double>> named_assign; // #<name>=value
     OKind o_kind = O_NONE;
@@ -47,7 +48,6 @@ struct Block {
     bool m98 = false;           // M98 Fanuc-style call
     bool block_delete = false;  // line starts with '/'
     int remap_g = -1;           // remapped G code ×10 on this line (REMAP=)
-    int remap_m = -1;           // remapped M code on this line
 
     Block() { for (int &g : g_modes) g = -1; for (int &m : m_modes) m = -1; }
     // true when letter word c ('a'..'z') is present

@@ -88,6 +88,7 @@ void Interp::do_comment(Block &b)
     INTERP_FRAME();
     const std::string &c = b.comment;
     std::string rest;
+    if (python_comment(c)) return;
     if (keyword(c, "msg", rest)) { out().message(rest); return; }
     if (keyword(c, "debug", rest)) {
         if (s_.params[5599] > 0) out().message(expand_text(rest));

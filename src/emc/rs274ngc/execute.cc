@@ -24,41 +24,15 @@ bool g0_uses_axes(int g)
 InterpStatus Interp::execute_block(Block &b)
 {
     INTERP_FRAME();
+    BlockScope scope(current_block_, &b);
     for (auto &a : b.num_assign) s_.params[a.first] = a.second;
     for (auto &a : b.named_assign) set_named(a.first, a.second);
     if (b.o_kind != O_NONE) return execute_oword(b);
     if (b.o_fanuc) return fanuc_label(b);
     check_block(b);
     if (b.m98) { fanuc_call(b); return INTERP_OK; }
-    if (b.has_comment) do_comment(b);
-    do_spindle_mode(b);
-    do_feed_mode(b);
-    do_feed_rate(b);
-    do_speed(b);
-    do_select_tool(b);
-    do_io(b);
-    bool finish = do_tool_change(b);
-    do_spindle(b);
-    do_coolant(b);
-    do_overrides(b);
-    do_user_m(b);
-    do_dwell(b);
-    do_plane(b);
-    do_units(b);
-    do_lathe_mode(b);
-    do_comp(b);
-    do_tool_length(b);
-    do_coord_system(b);
-    do_path_control(b);
-    do_distance(b);
-    do_retract(b);
-    do_nonmodal(b);
-    do_g92_family(b);
-    finish = do_motion(b) || finish;
-    InterpStatus st = do_stop(b);
-    if (st != INTERP_OK) return st;
-    run_remap(b);
-    return finish ? INTERP_EXECUTE_FINISH : INTERP_OK;
+    check_remap_args(b);
+    return run_steps(b, 0, false);
 }
 
 // Check axis-word and modal-group combination rules of gcode.md §2 and words without users.

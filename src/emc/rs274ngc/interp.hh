@@ -10,10 +10,13 @@
 #include <vector>
 
 #include "block.hh"
+#include "block_steps.hh"
 #include "canon.hh"
 #include "interp_base.hh"
 #include "interp_hooks.hh"
 #include "interp_state.hh"
+#include "py_host.hh"
+#include "remap_def.hh"
 #include "spline_geom.hh"
 #include "stack_frame.hh"
 
@@ -39,13 +42,6 @@ struct FlowFrame {
     long iterations = 0;           // loop passes so far (runaway guard)
 };
 
-// One REMAP= entry of the INI file (ngc procedures only).
-struct RemapDef {
-    int group = -1;                // modal group the code joins
-    std::string argspec;           // letters: upper = required, lower = optional, '@' positional
-    std::string ngc;               // subroutine name
-};
-
 // One subroutine call level.
 struct CallFrame {
     std::shared_ptr<SourceFile> file;
@@ -59,8 +55,7 @@ struct CallFrame {
     SavedModal saved;              // M70/M73 context of this level
     bool autorestore = false;      // M73: restore on return
     bool fanuc = false;            // M98 call (#1-#30 global)
-    bool remap = false;            // a REMAP procedure (counts in _remap_level)
-    int remap_motion = -1;         // remapped motion code to restore on return
+    bool python = false;           // a Python O-word sub or remap body (no lines to read)
     long fanuc_count = 0;          // M98 L repeats left
     long fanuc_iterations = 0;
 };
@@ -70,6 +65,8 @@ struct SubDef {
     std::shared_ptr<SourceFile> file;
     size_t line = 0;               // index of the "sub" line
 };
+
+class IniFile;
 
 // The interpreter.
 class Interp : public InterpBase, public ProfileSource {
@@ -159,7 +156,7 @@ private:
     // control flow (oword.cc, fanuc.cc)
     InterpStatus execute_oword(Block &b);
     void o_call(Block &b);
-    void o_return(Block &b);
+    InterpStatus o_return(Block &b);
     void o_sub(Block &b);
     void o_if(Block &b);
     void o_else(Block &b);
@@ -271,9 +268,55 @@ private:
     void modal_restore_block(const SavedModal &m, Block &b) const;
     void restore_coolant(const SavedModal &m, bool first);
 
-    // REMAP= support (remap.cc)
-    void load_remaps(const std::vector<std::string> &lines);
-    bool run_remap(Block &b);
+    // block execution order (block_steps.cc)
+    static const StepDef *block_steps();
+    InterpStatus run_steps(Block &b, int first, bool finish);
+    template <void (Interp::*F)(Block &)> StepResult step_plain(Block &b);
+    StepResult step_comment(Block &b);
+    StepResult step_tool_change(Block &b);
+    StepResult step_motion(Block &b);
+    StepResult step_stop(Block &b);
+
+    // REMAP= configuration (remap/remap_config.cc)
+    void load_remaps(const IniFile &ini);
+    std::string remap_parse_line(const std::string &line, RemapDef &def) const;
+    std::string remap_parse_code(const std::string &word, RemapDef &def) const;
+    std::string remap_parse_option(const std::string &key, const std::string &value, RemapDef &def) const;
+    std::string remap_check_group(RemapDef &def) const;
+    const RemapDef *letter_remap(char c) const;
+    static int builtin_g_group(int g);
+    static int builtin_m_group(int m);
+
+    // running remapped codes (remap/remap_exec.cc, remap/remap_args.cc)
+    const RemapDef *remap_due(const Block &b, const StepDef &step) const;
+    bool remap_active(const RemapDef *def) const;
+    void check_remap_args(const Block &b);
+    void remap_words(const Block &b, const RemapDef &def, std::vector<double> &positional,
+                     std::map<std::string, double> &named) const;
+    void consume_remapped(Block &b, const RemapDef &def) const;
+    InterpStatus start_remap(const Block &b, const RemapDef &def, int step, bool finish);
+    void push_remap_frame(RemapCall &rc, const std::vector<double> &positional,
+                          const std::map<std::string, double> &named);
+    InterpStatus remap_body();
+    InterpStatus remap_after_body();
+    InterpStatus remap_complete();
+    InterpStatus remap_outcome(const PyOutcome &o, RemapPhase phase);
+    InterpStatus resume_remap();
+    bool remap_suspended() const;
+    bool in_remap_frame() const;
+
+    // embedded Python (python/py_interp.cc)
+    void load_python_config(const IniFile &ini);
+    PyHost *python(const char *why);
+    void start_python();
+    bool python_comment(const std::string &text);
+    bool python_oword(Block &b);
+    bool python_named(const std::string &name, double &v);
+    static std::string semicolon_python(const std::string &raw);
+    InterpStatus execute_nested(const std::string &text);
+    InterpStatus run_frame_line();
+    InterpStatus run_line_body(const std::string &raw);
+    InterpStatus fail(const InterpError &e, const std::string &raw);
 
     // parameter file (varfile.cc) and predefined parameters (predef.cc)
     void read_var_file();
@@ -313,7 +356,18 @@ private:
     long total_iterations_ = 0;    // loop passes since the program (or MDI command) started
     std::string ini_path_;
     std::map<int, RemapDef> g_remaps_, m_remaps_;
-    int remap_level_ = 0;
+    std::map<char, RemapDef> letter_remaps_;   // T, S and F
+    std::vector<RemapCall> remap_stack_;       // running remaps; _remap_level is its size
+    std::string remap_call_line_;              // "O <name> call " while a remap starts (error echo)
+    const Block *current_block_ = nullptr;     // the block being executed (Python's blocks[0])
+    PyConfig py_config_;
+    bool py_configured_ = false;               // [PYTHON] present or Python needed by a REMAP
+    bool py_failed_ = false;                   // the plugin could not be started
+    std::unique_ptr<PyHost> py_;
+    std::string py_errormsg_;                  // set_errormsg() text for an INTERP_ERROR return
+    std::set<std::string> py_named_;           // #<_name>s defined by module namedparams
+
+    friend struct InterpAccess;
 };
 
 #endif

@@ -104,7 +104,7 @@ InterpStatus Interp::execute_oword(Block &b)
     INTERP_FRAME();
     switch (b.o_kind) {
     case O_SUB: o_sub(b); break;
-    case O_ENDSUB: case O_RETURN: o_return(b); break;
+    case O_ENDSUB: case O_RETURN: return o_return(b);
     case O_CALL: o_call(b); break;
     case O_IF: o_if(b); break;
     case O_ELSEIF: case O_ELSE: o_else(b); break;
@@ -131,23 +131,28 @@ void Interp::o_sub(Block &b)
     skip_sub_ = true;
 }
 
-// "return"/"endsub": leave the subroutine with an optional value.
-void Interp::o_return(Block &b)
+// "return"/"endsub": leave the subroutine with an optional value (a remap's epilog and block follow).
+InterpStatus Interp::o_return(Block &b)
 {
     INTERP_FRAME();
     CallFrame &f = calls_.back();
-    if (calls_.size() < 2 || f.fanuc || (b.o_kind == O_ENDSUB && f.sub_name != b.o_name))
-        return flow_fail("not in a subroutine definition", b);
+    if (calls_.size() < 2 || f.fanuc || (b.o_kind == O_ENDSUB && f.sub_name != b.o_name)) {
+        flow_fail("not in a subroutine definition", b);
+        return INTERP_OK;
+    }
     if (f.autorestore && f.saved.valid) modal_restore(f.saved);
-    pop_call();
+    bool remap = in_remap_frame();
+    if (!remap) pop_call();
     value_ = b.o_has_expr ? b.o_value : 0.0;
     value_returned_ = b.o_has_expr ? 1.0 : 0.0;
+    return remap ? remap_after_body() : INTERP_OK;
 }
 
 // "call": find the subroutine and enter it.
 void Interp::o_call(Block &b)
 {
     INTERP_FRAME();
+    if (python_oword(b)) return;
     SubDef def;
     if (!find_sub(b.o_name, def)) {
         std::string label = isdigit((unsigned char)b.o_name[0]) ? b.o_name : "<" + b.o_name + ">";
@@ -221,8 +226,6 @@ void Interp::pop_call()
     CallFrame &f = calls_.back();
     if (!f.fanuc)
         for (int i = 1; i <= 30; i++) s_.params[i] = f.saved_args[i];
-    if (f.remap) remap_level_--;
-    if (f.remap_motion != -1) s_.motion_mode = f.remap_motion;
     calls_.pop_back();
     s_.call_level = (int)calls_.size() - 1;
 }

@@ -107,6 +107,7 @@ void Interp::parse_line(const std::string &raw, Block &b)
 {
     INTERP_FRAME();
     std::string t = normalize(raw);
+    b.py_code = semicolon_python(raw);
     size_t pos = 0;
     if (pos < t.size() && t[pos] == '/') {
         b.block_delete = true;
@@ -246,10 +247,11 @@ void Interp::parse_m(const std::string &t, size_t &pos, Block &b)
     int m = to_int(read_real_value(t, pos));
     if (m < 0) throw InterpError("Negative m code used");
     auto remap = m_remaps_.find(m);
-    if (remap != m_remaps_.end()) {
+    if (remap != m_remaps_.end() && !(remap->second.builtin && remap_active(&remap->second))) {
         if (b.m_count >= 4) throw InterpError("Too many m codes on line");
-        if (b.remap_m != -1) throw InterpError("Two m codes used from same modal group");
-        b.remap_m = m;
+        if (b.m_modes[remap->second.group] != -1)
+            throw InterpError("Two m codes used from same modal group");
+        b.m_modes[remap->second.group] = m;
         b.m_count++;
         return;
     }
@@ -311,4 +313,16 @@ void Interp::parse_oword(const std::string &t, size_t &pos, Block &b)
             throw InterpError("Unexpected character after O-word");
         }
     }
+}
+
+// Modal group of a built-in G code x10, -1 when it is not one (REMAP= refuses built-in codes).
+int Interp::builtin_g_group(int g)
+{
+    return g_group(g);
+}
+
+// Modal group of a built-in M code, -1 when it is not one.
+int Interp::builtin_m_group(int m)
+{
+    return m == 98 ? MG_STOP : m_group(m);
 }

@@ -82,6 +82,7 @@ std::string upper(std::string v)
 bool Interp::predefined(const std::string &name, double &v)
 {
     INTERP_FRAME();
+    if (python_named(name, v)) return true;
     for (const Predef &p : PREDEFS) {
         if (name == p.name) {
             v = p.fn(s_);
@@ -98,7 +99,7 @@ bool Interp::predefined(const std::string &name, double &v)
         return true;
     }
     if (name == "_task") { v = task_ ? 1 : 0; return true; }
-    if (name == "_remap_level") { v = remap_level_; return true; }
+    if (name == "_remap_level") { v = (double)remap_stack_.size(); return true; }
     if (name == "_value") { v = value_; return true; }
     if (name == "_value_returned") { v = value_returned_; return true; }
     if (name.compare(0, 5, "_hal[") == 0) return hal_value(name, v);
