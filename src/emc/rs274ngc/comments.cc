@@ -70,8 +70,13 @@ std::string Interp::expand_param(const std::string &text, size_t &i, int decimal
         for (size_t k = i + 2; k < end; k++)
             if (text[k] != ' ' && text[k] != '\t') name += (char)tolower((unsigned char)text[k]);
         i = end;
-        if (name.empty() || !named_exists(name)) return "######";
-        return format_value(get_named(name), decimals);
+        try {
+            if (name.empty() || !named_exists(name)) return "######";
+            return format_value(get_named(name), decimals);
+        } catch (const InterpError &) {   // a namedparams function that failed: shown, not fatal
+            interp_error_unwinding = false;
+            return "######";
+        }
     }
     size_t k = i + 1;
     while (k < text.size() && isdigit((unsigned char)text[k])) k++;

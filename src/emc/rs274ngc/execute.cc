@@ -145,8 +145,10 @@ void Interp::do_speed(Block &b)
 {
     INTERP_FRAME();
     if (!b.word('s')) return;
-    s_.speed[0] = b.value('s');
-    out().set_spindle_speed(0, s_.speed[0]);
+    int sp = b.has_dollar ? clamp_int(b.dollar) : 0;
+    if (sp < 0 || sp >= s_.settings.spindles) throw InterpError("Invalid spindle ($) number");
+    s_.speed[sp] = b.value('s');
+    out().set_spindle_speed(sp, s_.speed[sp]);
 }
 
 // G4 dwell (step 15).

@@ -348,6 +348,7 @@ bool Interp::load_ini(const std::string &path)
     st.tool_change_at_g30 = flag("TOOL_CHANGE_AT_G30", "EMCIO", false);
     st.tool_change_with_spindle_on = flag("TOOL_CHANGE_WITH_SPINDLE_ON", "EMCIO", false);
     st.random_toolchanger = flag("RANDOM_TOOLCHANGER", "EMCIO", false);
+    if (auto n = ini.FindInt("SPINDLES", "TRAJ")) st.spindles = (int)std::clamp(*n, 1LL, (long long)SPINDLE_COUNT);
     auto units = ini.Find("LINEAR_UNITS", "TRAJ");
     st.metric_machine = !units ? -1 : *units == "inch" ? 0 : 1;
     if (auto v = ini.Find("PROGRAM_PREFIX", "DISPLAY")) st.program_prefix = IniFile::TildeExpand(*v);

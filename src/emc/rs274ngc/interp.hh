@@ -118,6 +118,10 @@ public:
     std::string find_user_m(int m) const;
     // mark the process as task (#<_task> = 1)
     void set_task(bool t) override { task_ = t; }
+    // the modal state as LinuxCNC's activeGCodes[17] / activeMCodes[10] / activeSettings[5] (nml.md §5)
+    void active_g_codes(int codes[17]) const;
+    void active_m_codes(int codes[10]) const;
+    void active_settings(double settings[5]) const;
     // ProfileSource: evaluated blocks of a subroutine
     std::vector<Block> sub_blocks(const std::string &name) override;
 
@@ -322,6 +326,7 @@ private:
     void read_var_file();
     void write_var_file();
     bool predefined(const std::string &name, double &v);
+    static std::vector<std::string> predefined_names();
     bool hal_value(const std::string &name, double &v);
 
     InterpState s_;
@@ -360,12 +365,13 @@ private:
     std::vector<RemapCall> remap_stack_;       // running remaps; _remap_level is its size
     std::string remap_call_line_;              // "O <name> call " while a remap starts (error echo)
     const Block *current_block_ = nullptr;     // the block being executed (Python's blocks[0])
-    PyConfig py_config_;
+    PythonConfig py_config_;
     bool py_configured_ = false;               // [PYTHON] present or Python needed by a REMAP
     bool py_failed_ = false;                   // the plugin could not be started
     std::unique_ptr<PyHost> py_;
     std::string py_errormsg_;                  // set_errormsg() text for an INTERP_ERROR return
     std::set<std::string> py_named_;           // #<_name>s defined by module namedparams
+    bool py_finish_request_ = false;           // Python set a queue-buster flag: end the block with execute-finish
 
     friend struct InterpAccess;
 };

@@ -55,8 +55,8 @@ enum RetractMode { RETRACT_OLD_Z = 0, RETRACT_R_PLANE = 1 };
 
 // Number of numbered parameters (#0 unused .. #5601).
 constexpr int PARAM_COUNT = 5602;
-// Number of spindles the interpreter tracks.
-constexpr int SPINDLE_COUNT = 1;
+// Most spindles the interpreter tracks ([TRAJ]SPINDLES says how many the machine has).
+constexpr int SPINDLE_COUNT = 8;
 // Parameter numbers the cycles and comp code read.
 constexpr int PARAM_G28_HOME = 5161;
 constexpr int PARAM_G30_HOME = 5181;
@@ -80,6 +80,7 @@ struct InterpSettings {
     bool random_toolchanger = false;
     bool lazy_close = false;
     int metric_machine = -1;          // _metric_machine
+    int spindles = 1;                 // [TRAJ]SPINDLES: spindles $0..$n-1 exist
     std::string program_prefix;
     std::vector<std::string> subroutine_path;
     std::vector<std::string> user_m_path;     // [RS274NGC]USER_M_PATH dirs (M100-M199)
@@ -125,7 +126,8 @@ struct InterpState {
     FeedMode feed_mode = FEED_UNITS_PER_MINUTE;
     double feed_rate = 0;
     double speed[SPINDLE_COUNT] = {};
-    CanonDirection spindle_dir[SPINDLE_COUNT] = {CANON_STOPPED};
+    CanonDirection spindle_dir[SPINDLE_COUNT] = {CANON_STOPPED, CANON_STOPPED, CANON_STOPPED, CANON_STOPPED,
+                                                 CANON_STOPPED, CANON_STOPPED, CANON_STOPPED, CANON_STOPPED};
     bool css_mode[SPINDLE_COUNT] = {};    // G96
     double css_max[SPINDLE_COUNT] = {};
     bool mist = false, flood = false;

@@ -65,8 +65,8 @@ void Interp::do_spindle(Block &b)
     int m = b.m_modes[MG_SPINDLE];
     if (m == -1) return;
     int sp = b.has_dollar ? clamp_int(b.dollar) : 0;
-    if (sp < -1 || sp >= SPINDLE_COUNT) throw InterpError("Invalid spindle ($) number");
-    int first = sp == -1 ? 0 : sp, last = sp == -1 ? SPINDLE_COUNT - 1 : sp;
+    if (sp < -1 || sp >= s_.settings.spindles) throw InterpError("Invalid spindle ($) number");
+    int first = sp == -1 ? 0 : sp, last = sp == -1 ? s_.settings.spindles - 1 : sp;
     for (int s = first; s <= last; s++) {
         if (m == 3) { out().start_spindle_clockwise(s); s_.spindle_dir[s] = CANON_CLOCKWISE; }
         if (m == 4) {
@@ -203,7 +203,7 @@ void Interp::m2_reset(int code)
 // M2/M30 part: stop every spindle, leave CSS mode and re-enable the speed override.
 void Interp::m2_stop_spindles()
 {
-    for (int sp = 0; sp < SPINDLE_COUNT; sp++) {
+    for (int sp = 0; sp < s_.settings.spindles; sp++) {
         out().stop_spindle_turning(sp);
         s_.spindle_dir[sp] = CANON_STOPPED;
         out().set_spindle_mode(sp, 0);

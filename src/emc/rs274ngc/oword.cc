@@ -168,10 +168,12 @@ bool Interp::find_sub(const std::string &name, SubDef &def)
     INTERP_FRAME();
     auto it = subs_.find(name);
     if (it != subs_.end()) { def = it->second; return true; }
-    CallFrame &f = calls_.back();
+    size_t level = calls_.size() - 1;
+    while (level > 0 && !calls_[level].file) level--;   // a remap's or Python's frame has no file
+    CallFrame &f = calls_[level];
     std::string n;
     OKind k;
-    for (size_t i = f.pos; i < f.file->lines.size(); i++) {
+    for (size_t i = f.pos; f.file && i < f.file->lines.size(); i++) {
         if (peek_oword(f.file->lines[i], n, k) && k == O_SUB && n == name) {
             def = SubDef{f.file, i};
             subs_[name] = def;

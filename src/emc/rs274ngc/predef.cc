@@ -129,3 +129,16 @@ bool Interp::hal_value(const std::string &name, double &v)
     if (close != name.size() - 1 || !s_.settings.hal_pin_vars || !hal_reader_) return false;
     return hal_reader_(name.substr(5, close - 5), v);
 }
+
+// Names of the built-in predefined parameters (for Python's params.globals()).
+std::vector<std::string> Interp::predefined_names()
+{
+    std::vector<std::string> names;
+    for (const Predef &p : PREDEFS) names.push_back(p.name);
+    for (const char *axis = "xyzabcuvw"; *axis; axis++) {
+        names.push_back(std::string("_") + *axis);
+        names.push_back(std::string("_abs_") + *axis);
+    }
+    for (const char *n : {"_task", "_remap_level", "_value", "_value_returned"}) names.push_back(n);
+    return names;
+}

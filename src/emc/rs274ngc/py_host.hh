@@ -12,7 +12,7 @@
 class Interp;
 
 // The [PYTHON] section of the INI file (ini.md, LinuxCNC remap documentation).
-struct PyConfig {
+struct PythonConfig {
     std::string toplevel;                  // TOPLEVEL script, "" = none
     std::vector<std::string> path_prepend; // PATH_PREPEND, in INI order
     std::vector<std::string> path_append;  // PATH_APPEND, in INI order
@@ -31,7 +31,7 @@ struct PyOutcome {
 };
 
 // Python modules the interpreter looks functions up in.
-enum PyModule { PY_OWORD, PY_REMAP, PY_NAMEDPARAMS };
+enum PyModuleKind { PY_OWORD, PY_REMAP, PY_NAMEDPARAMS };
 
 // The embedded Python as the interpreter sees it; the plugin implements it.
 class PyHost {
@@ -44,7 +44,7 @@ public:
     // TOPLEVEL's __delete__(self) at interpreter exit
     virtual PyOutcome call_delete() = 0;
     // true when module.name exists and is callable
-    virtual bool callable(PyModule module, const std::string &name) = 0;
+    virtual bool callable(PyModuleKind module, const std::string &name) = 0;
     // oword.name(self, *args): VALUE, OK (returned None) or ERROR
     virtual PyOutcome call_oword(const std::string &name, const std::vector<double> &args) = 0;
     // remap.name(self, **words): OK, SUSPEND (yielded INTERP_EXECUTE_FINISH) or ERROR
@@ -68,10 +68,10 @@ constexpr int PY_PLUGIN_VERSION = 1;
 struct PyPluginOps {
     int version;
     // create the host for this interpreter; nullptr with err set on failure
-    PyHost *(*create)(Interp &interp, const PyConfig &config, std::string &err);
+    PyHost *(*create)(Interp &interp, const PythonConfig &config, std::string &err);
 };
 
 // Load the plugin (and libpython when the process has none) and create a host.
-std::unique_ptr<PyHost> load_python_host(Interp &interp, const PyConfig &config, std::string &err);
+std::unique_ptr<PyHost> load_python_host(Interp &interp, const PythonConfig &config, std::string &err);
 
 #endif

@@ -79,7 +79,7 @@ void Interp::set_tool_number(const Block &b)
 void Interp::tool_change_moves()
 {
     if (!s_.settings.tool_change_with_spindle_on) {
-        for (int sp = 0; sp < SPINDLE_COUNT; sp++) {
+        for (int sp = 0; sp < s_.settings.spindles; sp++) {
             out().stop_spindle_turning(sp);
             s_.spindle_dir[sp] = CANON_STOPPED;
         }

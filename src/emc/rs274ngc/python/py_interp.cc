@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <cstring>
 #include <strings.h>
+#include <unistd.h>
 
 #include "inifile.hh"
 #include "../interp.hh"
@@ -17,19 +18,20 @@ std::string dir_of(const std::string &path)
     return slash == std::string::npos ? "." : path.substr(0, slash);
 }
 
-// path made absolute against base (INI directory), ~ expanded
-std::string resolve(const std::string &path, const std::string &base)
+// a relative TOPLEVEL is taken from the working directory (as LinuxCNC does), else from the INI's directory
+std::string resolve_toplevel(const std::string &path, const std::string &base)
 {
     std::string p = IniFile::TildeExpand(path);
-    if (p.empty() || p[0] == '/') return p;
-    return base + "/" + p;
+    if (p.empty() || p[0] == '/' || access(p.c_str(), F_OK) == 0) return p;
+    std::string beside = base + "/" + p;
+    return access(beside.c_str(), F_OK) == 0 ? beside : p;
 }
 
-// every value of key in [PYTHON], resolved against base
-std::vector<std::string> python_paths(const IniFile &ini, const char *key, const std::string &base)
+// every value of key in [PYTHON] (relative directories stay relative to the working directory)
+std::vector<std::string> python_paths(const IniFile &ini, const char *key)
 {
     std::vector<std::string> out;
-    for (const std::string &v : ini.FindAll(key, "PYTHON")) out.push_back(resolve(v, base));
+    for (const std::string &v : ini.FindAll(key, "PYTHON")) out.push_back(IniFile::TildeExpand(v));
     return out;
 }
 
@@ -51,11 +53,11 @@ void Interp::load_python_config(const IniFile &ini)
 {
     INTERP_FRAME();
     std::string base = dir_of(ini.Path());
-    py_config_ = PyConfig();
+    py_config_ = PythonConfig();
     py_config_.ini_file = ini.Path();
-    if (auto v = ini.Find("TOPLEVEL", "PYTHON")) py_config_.toplevel = resolve(*v, base);
-    py_config_.path_prepend = python_paths(ini, "PATH_PREPEND", base);
-    py_config_.path_append = python_paths(ini, "PATH_APPEND", base);
+    if (auto v = ini.Find("TOPLEVEL", "PYTHON")) py_config_.toplevel = resolve_toplevel(*v, base);
+    py_config_.path_prepend = python_paths(ini, "PATH_PREPEND");
+    py_config_.path_append = python_paths(ini, "PATH_APPEND");
     if (auto v = ini.FindInt("LOG_LEVEL", "PYTHON")) py_config_.log_level = (int)*v;
     if (auto v = ini.FindBool("RELOAD_ON_CHANGE", "PYTHON")) py_config_.reload_on_change = *v;
     py_configured_ = ini.HasSection("PYTHON");
@@ -85,7 +87,7 @@ void Interp::start_python()
 {
     INTERP_FRAME();
     if (!py_configured_) return;
-    PyHost *py = python("[PYTHON]");
+    PyHost *py = python("embedded Python");
     py_named_.clear();
     for (const std::string &n : py->named_param_names()) {
         double v;

@@ -58,7 +58,7 @@ const PyPluginOps *open_plugin(std::string &err)
 } // namespace
 
 // Load the plugin (and libpython when the process has none) and create a host.
-std::unique_ptr<PyHost> load_python_host(Interp &interp, const PyConfig &config, std::string &err)
+std::unique_ptr<PyHost> load_python_host(Interp &interp, const PythonConfig &config, std::string &err)
 {
     if (!ensure_libpython(err)) return nullptr;
     const PyPluginOps *ops = open_plugin(err);

@@ -60,10 +60,9 @@ std::string Interp::remap_parse_code(const std::string &word, RemapDef &def) con
     if (def.letter == 'M') {
         if (v != std::floor(v) || v > 999) return "M code must be an integer from 0 to 999";
         def.number = (int)v;
-        if (def.number >= 100 && def.number <= 199)
-            return "M100-M199 are user-defined M codes and cannot be remapped";
         def.builtin = builtin_m_group(def.number) >= 0;
-        if (def.builtin && remappable_builtin_m_group(def.number) < 0)
+        bool user_m = def.number >= 100 && def.number <= 199;
+        if (def.builtin && !user_m && remappable_builtin_m_group(def.number) < 0)
             return "this built-in M code cannot be remapped";
         return "";
     }

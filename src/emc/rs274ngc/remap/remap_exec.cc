@@ -18,7 +18,6 @@ InterpStatus Interp::start_remap(const Block &b, const RemapDef &def, int step, 
     RemapCall rc;
     rc.def = &def;
     rc.block = b;
-    consume_remapped(rc.block, def);
     rc.resume_step = step;
     rc.finish = finish;
     rc.call_line = "O <" + def.proc() + "> call ";
@@ -34,22 +33,15 @@ InterpStatus Interp::start_remap(const Block &b, const RemapDef &def, int step, 
     return remap_outcome(py_->call_remap(def.prolog, top.words), REMAP_PROLOG);
 }
 
-// Enter the procedure's call level: an NGC subroutine, or a frame for the Python body.
+// Enter the procedure's call level (its arguments set) before the prolog runs; the NGC file is found after it.
 void Interp::push_remap_frame(RemapCall &rc, const std::vector<double> &positional,
                               const std::map<std::string, double> &named)
 {
     INTERP_FRAME();
     const RemapDef &def = *rc.def;
     bool at = def.argspec.find('@') != std::string::npos;
-    if (def.ngc.empty()) {
-        push_call(SubDef{}, def.python, {}, false);
-        calls_.back().python = true;
-    } else {
-        SubDef sub;
-        if (!find_sub(def.ngc, sub))
-            throw InterpError("Remap procedure " + def.ngc + " for " + def.code + " not found");
-        push_call(sub, def.ngc, positional, false);
-    }
+    push_call(SubDef{}, def.proc(), positional, false);
+    calls_.back().python = def.ngc.empty();
     if (!at)
         for (const auto &kv : named) calls_.back().locals[kv.first] = kv.second;
     rc.frame = calls_.size() - 1;
@@ -64,6 +56,13 @@ InterpStatus Interp::remap_body()
         rc.phase = REMAP_BODY_PY;
         return remap_outcome(py_->call_remap(rc.def->python, rc.words), REMAP_BODY_PY);
     }
+    SubDef sub;
+    if (!find_sub(rc.def->ngc, sub))
+        throw InterpError("Remap procedure " + rc.def->ngc + " for " + rc.def->code + " not found");
+    CallFrame &f = calls_[rc.frame];
+    f.file = sub.file;
+    f.pos = sub.line + 1;
+    f.sub_line = sub.line;
     rc.phase = REMAP_BODY_NGC;
     remap_call_line_.clear();
     return INTERP_OK;
@@ -88,7 +87,10 @@ InterpStatus Interp::remap_complete()
     remap_stack_.pop_back();
     while (calls_.size() > rc.frame) pop_call();
     remap_call_line_.clear();
-    return run_steps(rc.block, rc.resume_step, rc.finish);
+    bool finish = rc.finish || py_finish_request_;
+    py_finish_request_ = false;
+    consume_remapped(rc.block, *rc.def);
+    return run_steps(rc.block, rc.resume_step, finish);
 }
 
 // Act on what a prolog, Python body or epilog returned.
