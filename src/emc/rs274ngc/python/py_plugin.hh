@@ -2,6 +2,7 @@
 #ifndef OPENEMC_RS274NGC_PY_PLUGIN_HH
 #define OPENEMC_RS274NGC_PY_PLUGIN_HH
 
+#include "../interp_base.hh"
 #include "py_util.hh"
 
 class Interp;
@@ -25,7 +26,10 @@ PyEnv &py_env();
 PyObject *make_state_module();
 // The `emccanon` module (canon calls), new reference.
 PyObject *make_canon_module();
-// Map an interpreter status to LinuxCNC's code.
-int py_interp_code(int status);
+// Map an interpreter status to LinuxCNC's code (only INTERP_ERROR differs).
+inline int py_interp_code(int status)
+{
+    return status == INTERP_ERROR ? PY_INTERP_ERROR : status;
+}
 
 #endif

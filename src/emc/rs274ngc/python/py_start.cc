@@ -73,8 +73,8 @@ time_t mtime(const std::string &path)
 // The process-wide Python state.
 PyProcess &py_process()
 {
-    static PyProcess p;
-    return p;
+    static PyProcess *p = new PyProcess;   // never destroyed: Python may be finalized before static destructors run
+    return *p;
 }
 
 // Start the runtime (when the process has none) and the modules; false with err set.

@@ -343,15 +343,3 @@ PyObject *make_state_module()
 {
     return PyModule_Create(&MODULE);
 }
-
-// Map an interpreter status to LinuxCNC's code.
-int py_interp_code(int status)
-{
-    switch (status) {
-    case INTERP_OK: return PY_INTERP_OK;
-    case INTERP_EXIT: return PY_INTERP_EXIT;
-    case INTERP_EXECUTE_FINISH: return PY_INTERP_EXECUTE_FINISH;
-    case INTERP_ENDFILE: return PY_INTERP_ENDFILE;
-    default: return PY_INTERP_ERROR;
-    }
-}
