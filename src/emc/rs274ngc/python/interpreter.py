@@ -245,7 +245,26 @@ class ToolEntry:
         return "<tool %d pocket %d offset %s diameter %g>" % (t[0], t[1], t[2], t[3])
 
 
-_STATE_NAMES = frozenset(_state.names())
+class _Speeds:
+    """self.speed: the programmed speed of each spindle, readable and writable by index."""
+
+    def __len__(self):
+        return len(_state.get("speed"))
+
+    def __getitem__(self, index):
+        return _state.get("speed")[index]
+
+    def __setitem__(self, index, value):
+        _state.set_speed(index, float(value))
+
+    def __iter__(self):
+        return iter(_state.get("speed"))
+
+    def __repr__(self):
+        return repr(_state.get("speed"))
+
+
+_STATE_NAMES = frozenset(_state.names()) - {"speed"}
 _PARAMS = Params()
 
 
@@ -268,6 +287,10 @@ class Interp:
     @property
     def tool_table(self):
         return _Levels(_state.tool_count, ToolEntry)
+
+    @property
+    def speed(self):
+        return _Speeds()
 
     @property
     def tool_offset(self):
@@ -308,13 +331,14 @@ class Interp:
         return _state.get_errormsg()
 
     def find_tool_pocket(self, toolno):
-        """(INTERP_OK, tool-data index) of a tool number, (INTERP_ERROR, -1) when it is not there."""
-        index = _state.find_tool(int(toolno))
+        """(INTERP_OK, tool-data index) of a tool number (T0, no tool, is index 0),
+        (INTERP_ERROR, -1) when it is not there."""
+        index = 0 if int(toolno) == 0 else _state.find_tool(int(toolno))
         return (INTERP_OK, index) if index >= 0 else (INTERP_ERROR, -1)
 
     def set_tool_parameters(self):
-        """#5400-#5413 follow the loaded tool (tool_table[0]) by themselves."""
-        return INTERP_OK
+        """Make tool_table[current_pocket] the loaded tool (tool_table[0], #5400-#5413)."""
+        return _state.set_tool_parameters()
 
 
 this = Interp()

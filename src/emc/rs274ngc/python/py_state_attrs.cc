@@ -87,7 +87,7 @@ const StateAttr ATTRS[] = {
      [](PyObject *o) { return to_int(o, st().selected_pocket); }},
     {"current_pocket", [] { return integer(st().current_pocket); },
      [](PyObject *o) { return to_int(o, st().current_pocket); }},
-    {"current_tool", [] { return integer(st().tools.empty() ? 0 : st().tools[0].toolno); },
+    {"current_tool", [] { return integer(st().tools.empty() || st().tools[0].toolno < 0 ? 0 : st().tools[0].toolno); },
      [](PyObject *o) { return !st().tools.empty() && to_int(o, st().tools[0].toolno); }},
     {"cutter_comp_side", [] { return integer(comp_side()); }, nullptr},
     {"cutter_comp_radius", [] { return num(st().comp_radius); }, nullptr},

@@ -284,6 +284,32 @@ PyObject *m_get_errormsg(PyObject *, PyObject *)
     return PyUnicode_FromString(InterpAccess::errormsg(cur()).c_str());
 }
 
+// set_speed(spindle, rpm): self.speed[spindle] = rpm
+PyObject *m_set_speed(PyObject *, PyObject *args)
+{
+    int spindle;
+    double rpm;
+    if (!PyArg_ParseTuple(args, "id", &spindle, &rpm) || !have_interp()) return nullptr;
+    if (spindle < 0 || spindle >= SPINDLE_COUNT) {
+        PyErr_Format(PyExc_IndexError, "spindle %d out of range", spindle);
+        return nullptr;
+    }
+    InterpAccess::state(cur()).speed[spindle] = rpm;
+    Py_RETURN_NONE;
+}
+
+// set_tool_parameters(): the spindle row (tool_table[0], #5400-#5413) becomes the row of current_pocket
+PyObject *m_set_tool_parameters(PyObject *, PyObject *)
+{
+    if (!have_interp()) return nullptr;
+    InterpState &s = InterpAccess::state(cur());
+    if (s.current_pocket > 0 && s.current_pocket < (int)s.tools.size())
+        s.tools[0] = s.tools[s.current_pocket];
+    else if (s.current_pocket == 0 && !s.tools.empty())
+        s.tools[0] = CanonTool();
+    return PyLong_FromLong(0);
+}
+
 // find_tool(toolno) -> tool-data index, -1 when absent
 PyObject *m_find_tool(PyObject *, PyObject *arg)
 {
@@ -329,6 +355,8 @@ PyMethodDef METHODS[] = {
     {"set_errormsg", m_set_errormsg, METH_O, "the message of an INTERP_ERROR return"},
     {"get_errormsg", m_get_errormsg, METH_NOARGS, "the message set by set_errormsg"},
     {"find_tool", m_find_tool, METH_O, "tool-data index of a tool number"},
+    {"set_speed", m_set_speed, METH_VARARGS, "set the speed of one spindle"},
+    {"set_tool_parameters", m_set_tool_parameters, METH_NOARGS, "load tool_table[current_pocket] into the spindle"},
     {"remaps", m_remaps, METH_NOARGS, "the REMAP definitions"},
     {nullptr, nullptr, 0, nullptr},
 };
