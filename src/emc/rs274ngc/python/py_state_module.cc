@@ -1,7 +1,7 @@
 // py_state_module.cc: the private module `_rs274ngc` that interpreter.py builds `self`, params, blocks,
 // contexts and the tool table on.
-#include <algorithm>
 #include <cctype>
+#include <cstring>
 #include <set>
 
 #include "interp_access.hh"
@@ -230,6 +230,28 @@ PyObject *m_tool(PyObject *, PyObject *arg)
                          o.w, t.diameter, t.frontangle, t.backangle, t.orientation);
 }
 
+// the double field of a tool row that `name` names (offset axes as "x".."w"), nullptr if none
+double *tool_double(CanonTool &t, const std::string &name)
+{
+    static const char axes[] = "xyzabcuvw";
+    double *offs[] = {&t.offset.x, &t.offset.y, &t.offset.z, &t.offset.a, &t.offset.b, &t.offset.c,
+                      &t.offset.u, &t.offset.v, &t.offset.w};
+    if (name == "diameter") return &t.diameter;
+    if (name == "frontangle") return &t.frontangle;
+    if (name == "backangle") return &t.backangle;
+    const char *axis = name.size() == 1 ? strchr(axes, name[0]) : nullptr;
+    return axis ? offs[axis - axes] : nullptr;
+}
+
+// the int field of a tool row that `name` names, nullptr if none
+int *tool_int(CanonTool &t, const std::string &name)
+{
+    if (name == "toolno") return &t.toolno;
+    if (name == "pocketno") return &t.pocketno;
+    if (name == "orientation") return &t.orientation;
+    return nullptr;
+}
+
 // tool_table[index].field = value (offset fields as "x".."w")
 PyObject *m_tool_set(PyObject *, PyObject *args)
 {
@@ -242,19 +264,11 @@ PyObject *m_tool_set(PyObject *, PyObject *args)
         PyErr_SetString(PyExc_IndexError, "tool table index out of range");
         return nullptr;
     }
-    CanonTool &t = tools[k];
-    std::string f = field;
-    double *offs[] = {&t.offset.x, &t.offset.y, &t.offset.z, &t.offset.a, &t.offset.b, &t.offset.c,
-                      &t.offset.u, &t.offset.v, &t.offset.w};
-    static const char axes[] = "xyzabcuvw";
-    if (f == "toolno") t.toolno = (int)v;
-    else if (f == "pocketno") t.pocketno = (int)v;
-    else if (f == "diameter") t.diameter = v;
-    else if (f == "frontangle") t.frontangle = v;
-    else if (f == "backangle") t.backangle = v;
-    else if (f == "orientation") t.orientation = (int)v;
-    else if (f.size() == 1 && std::find(axes, axes + 9, f[0]) != axes + 9) *offs[std::find(axes, axes + 9, f[0]) - axes] = v;
-    else {
+    if (double *d = tool_double(tools[k], field)) {
+        *d = v;
+    } else if (int *i = tool_int(tools[k], field)) {
+        *i = (int)v;
+    } else {
         PyErr_Format(PyExc_AttributeError, "tool has no field '%s'", field);
         return nullptr;
     }
