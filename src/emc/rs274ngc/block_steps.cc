@@ -77,7 +77,8 @@ InterpStatus Interp::run_steps(Block &b, int first, bool finish)
     BlockScope scope(current_block_, &b);
     const StepDef *steps = block_steps();
     for (int i = first; steps[i].run; i++) {
-        if (const RemapDef *def = remap_due(b, steps[i])) return start_remap(b, *def, i, finish);
+        const RemapDef *def = have_remaps_ && steps[i].slot != SLOT_NONE ? remap_due(b, steps[i]) : nullptr;
+        if (def) return start_remap(b, *def, i, finish);
         StepResult r = (this->*steps[i].run)(b);
         if (r == STEP_EXIT) return INTERP_EXIT;
         if (r == STEP_FINISH) finish = true;

@@ -362,6 +362,7 @@ private:
     std::string ini_path_;
     std::map<int, RemapDef> g_remaps_, m_remaps_;
     std::map<char, RemapDef> letter_remaps_;   // T, S and F
+    bool have_remaps_ = false;                 // any REMAP= line loaded (else blocks skip the remap checks)
     std::vector<RemapCall> remap_stack_;       // running remaps; _remap_level is its size
     std::string remap_call_line_;              // "O <name> call " while a remap starts (error echo)
     const Block *current_block_ = nullptr;     // the block being executed (Python's blocks[0])

@@ -130,6 +130,7 @@ bool Interp::python_comment(const std::string &text)
 // The ';' comment of a raw line when it is a Python one ("" otherwise); ';' inside (...) does not count.
 std::string Interp::semicolon_python(const std::string &raw)
 {
+    if (raw.find(';') == std::string::npos) return "";
     bool in_paren = false;
     for (size_t i = 0; i < raw.size(); i++) {
         if (raw[i] == '(') in_paren = true;

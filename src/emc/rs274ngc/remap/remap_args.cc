@@ -44,6 +44,7 @@ bool Interp::remap_active(const RemapDef *def) const
 const RemapDef *Interp::remap_due(const Block &b, const StepDef &step) const
 {
     const RemapDef *def = nullptr;
+    if (step.slot == SLOT_NONE || !have_remaps_) return nullptr;
     if (step.slot == SLOT_F || step.slot == SLOT_S || step.slot == SLOT_T) {
         char c = step.slot == SLOT_F ? 'f' : step.slot == SLOT_S ? 's' : 't';
         def = b.word(c) ? letter_remap(c) : nullptr;
@@ -92,6 +93,7 @@ void Interp::remap_words(const Block &b, const RemapDef &def, std::vector<double
 void Interp::check_remap_args(const Block &b)
 {
     INTERP_FRAME();
+    if (!have_remaps_) return;
     const StepDef *steps = block_steps();
     for (int i = 0; steps[i].run; i++) {
         const RemapDef *def = remap_due(b, steps[i]);

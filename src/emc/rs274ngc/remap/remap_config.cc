@@ -163,6 +163,7 @@ void Interp::load_remaps(const IniFile &ini)
         else
             letter_remaps_[def.letter] = def;
     }
+    have_remaps_ = !g_remaps_.empty() || !m_remaps_.empty() || !letter_remaps_.empty();
 }
 
 // The remap of letter word c ('t', 's' or 'f'), nullptr when not remapped.
