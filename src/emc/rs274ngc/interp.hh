@@ -30,6 +30,8 @@ struct SourceFile {
     std::string path;
     std::vector<std::string> lines;
     bool percent = false;          // first non-blank line is a lone '%'
+    bool subs_indexed = false;     // `subs` is filled
+    std::multimap<std::string, size_t> subs;   // "o<name> sub" lines by name (looked up, not rescanned)
 };
 
 // An active loop or conditional of the current call level.
@@ -175,6 +177,8 @@ private:
     bool skip_match(const std::string &name, OKind kind);
     bool peek_oword(const std::string &line, std::string &name, OKind &kind);
     bool find_sub(const std::string &name, SubDef &def);
+    bool sub_in_file(const std::shared_ptr<SourceFile> &file, const std::string &name, size_t from, SubDef &def);
+    std::shared_ptr<SourceFile> load_sub_file(const std::string &path);
     std::shared_ptr<SourceFile> load_file(const std::string &path);
     std::shared_ptr<SourceFile> make_source(const std::string &path, const std::string &text);
     void open_source(const std::shared_ptr<SourceFile> &f);
@@ -336,6 +340,7 @@ private:
     std::set<int> in_var_file_;
     std::vector<CallFrame> calls_;
     std::map<std::string, SubDef> subs_;
+    std::map<std::string, std::pair<long long, std::shared_ptr<SourceFile>>> sub_files_;  // path -> (mtime+size, file)
     std::map<std::string, double> globals_;
     std::map<std::string, double> ini_cache_;
     std::string error_, error_line_;

@@ -171,28 +171,17 @@ bool Interp::find_sub(const std::string &name, SubDef &def)
     size_t level = calls_.size() - 1;
     while (level > 0 && !calls_[level].file) level--;   // a remap's or Python's frame has no file
     CallFrame &f = calls_[level];
-    std::string n;
-    OKind k;
-    for (size_t i = f.pos; f.file && i < f.file->lines.size(); i++) {
-        if (peek_oword(f.file->lines[i], n, k) && k == O_SUB && n == name) {
-            def = SubDef{f.file, i};
-            subs_[name] = def;
-            return true;
-        }
+    if (f.file && sub_in_file(f.file, name, f.pos, def)) {
+        subs_[name] = def;
+        return true;
     }
     std::vector<std::string> dirs;
     if (!s_.settings.program_prefix.empty()) dirs.push_back(s_.settings.program_prefix);
     for (const std::string &d : s_.settings.subroutine_path) dirs.push_back(d);
     if (!s_.settings.wizard_root.empty()) dirs.push_back(s_.settings.wizard_root);
     for (const std::string &d : dirs) {
-        auto file = load_file(d + "/" + name + ".ngc");
-        if (!file) continue;
-        for (size_t i = 0; i < file->lines.size(); i++) {
-            if (peek_oword(file->lines[i], n, k) && k == O_SUB && n == name) {
-                def = SubDef{file, i};
-                return true;
-            }
-        }
+        auto file = load_sub_file(d + "/" + name + ".ngc");
+        if (file && sub_in_file(file, name, 0, def)) return true;
     }
     return false;
 }
