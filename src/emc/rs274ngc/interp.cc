@@ -147,6 +147,8 @@ void Interp::open_source(const std::shared_ptr<SourceFile> &f)
 {
     INTERP_FRAME();
     const std::string &path = f->path;
+    remap_stack_.clear();
+    remap_call_line_.clear();
     calls_.resize(1);
     calls_[0] = CallFrame();
     calls_[0].file = f;

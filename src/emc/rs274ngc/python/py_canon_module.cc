@@ -69,8 +69,6 @@ const std::vector<CanonCall> &calls()
         v("FINISH", &Canon::finish), v("LOGCLOSE", &Canon::logclose), v("ON_RESET", &Canon::on_reset),
         i("SELECT_TOOL", &Canon::select_tool), i("CHANGE_TOOL_NUMBER", &Canon::change_tool_number),
         i("STOP_SPINDLE_TURNING", &Canon::stop_spindle_turning),
-        i("START_SPINDLE_CLOCKWISE", &Canon::start_spindle_clockwise),
-        i("START_SPINDLE_COUNTERCLOCKWISE", &Canon::start_spindle_counterclockwise),
         i("ENABLE_SPEED_OVERRIDE", &Canon::enable_speed_override),
         i("DISABLE_SPEED_OVERRIDE", &Canon::disable_speed_override),
         i("SET_MOTION_OUTPUT_BIT", &Canon::set_motion_output_bit),
@@ -174,6 +172,18 @@ PyObject *rigid_tap(PyObject *, PyObject *args)
     double x, y, z, scale = 1.0;
     if (!PyArg_ParseTuple(args, "iddd|d", &line, &x, &y, &z, &scale)) return nullptr;
     return call([&] { canon().rigid_tap(line, x, y, z, scale); });
+}
+
+// START_SPINDLE_CLOCKWISE / _COUNTERCLOCKWISE(spindle[, wait_for_at_speed]): the wait flag is task's
+PyObject *spindle_start(PyObject *self, PyObject *args)
+{
+    int spindle, wait = 1;
+    if (!PyArg_ParseTuple(args, "i|i", &spindle, &wait)) return nullptr;
+    bool ccw = py_str(self) == "START_SPINDLE_COUNTERCLOCKWISE";
+    return call([&] {
+        if (ccw) canon().start_spindle_counterclockwise(spindle);
+        else canon().start_spindle_clockwise(spindle);
+    });
 }
 
 // CANON_ERROR(text): an operator error, sent at once (not held behind cutter-compensation moves)
@@ -310,6 +320,12 @@ PyObject *query(PyObject *self, PyObject *args)
     return PyLong_FromLong(c.get_external_toolchanger_reason());
 }
 
+// functions dispatched by name (self is the name)
+const struct { const char *name; PyCFunction fn; } BY_NAME[] = {
+    {"START_SPINDLE_CLOCKWISE", spindle_start},
+    {"START_SPINDLE_COUNTERCLOCKWISE", spindle_start},
+};
+
 const char *const QUERIES[] = {
     "GET_EXTERNAL_DIGITAL_INPUT", "GET_EXTERNAL_ANALOG_INPUT", "GET_EXTERNAL_PROBE_TRIPPED_VALUE",
     "GET_EXTERNAL_LENGTH_UNITS", "GET_EXTERNAL_LENGTH_UNIT_TYPE", "GET_EXTERNAL_MOTION_CONTROL_MODE",
@@ -359,6 +375,7 @@ PyObject *make_canon_module()
     if (defs.empty()) {
         for (const CanonCall &c : calls()) defs.push_back({c.name, dispatch, METH_VARARGS, nullptr});
         for (const char *const *q = QUERIES; *q; q++) defs.push_back({*q, query, METH_VARARGS, nullptr});
+        for (const auto &b : BY_NAME) defs.push_back({b.name, b.fn, METH_VARARGS, nullptr});
     }
     for (size_t k = 0; k < calls().size(); k++) {
         PyRef index(PyLong_FromSize_t(k));
