@@ -1,21 +1,18 @@
-// block_steps.hh: the execution order of a block's items (gcode.md §3) as a table, with the remap slot of each step.
+// block_steps.hh: one step of block execution (LinuxCNC's order of execution) and the remapped code it may run.
 #ifndef OPENEMC_RS274NGC_BLOCK_STEPS_HH
 #define OPENEMC_RS274NGC_BLOCK_STEPS_HH
 
 class Interp;
 struct Block;
 
-// What one step asks of the rest of the block.
-enum StepResult { STEP_CONTINUE, STEP_FINISH, STEP_EXIT };
-
 // Which remapped code a step may hand over to its remap procedure.
 enum RemapSlot { SLOT_NONE, SLOT_F, SLOT_S, SLOT_T, SLOT_M, SLOT_G };
 
 // One step of block execution.
-struct StepDef {
-    StepResult (Interp::*run)(Block &b);  // the built-in behaviour
-    RemapSlot slot;                       // remapped code this step may run instead
-    int group;                            // modal group of that code (SLOT_M, SLOT_G)
+struct ExecStep {
+    void (Interp::*run)(Block &b);  // the built-in behaviour
+    RemapSlot slot;                 // remapped code this step may run instead
+    int group;                      // modal group of that code (SLOT_M, SLOT_G)
 };
 
 // Makes a block the current one (Python's blocks[0]) for as long as it lives.

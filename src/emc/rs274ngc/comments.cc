@@ -74,7 +74,6 @@ std::string Interp::expand_param(const std::string &text, size_t &i, int decimal
             if (name.empty() || !named_exists(name)) return "######";
             return format_value(get_named(name), decimals);
         } catch (const InterpError &) {   // a namedparams function that failed: shown, not fatal
-            interp_error_unwinding = false;
             return "######";
         }
     }

@@ -71,10 +71,11 @@ void Interp::init()
     s_.origin_index = index;
     s_.params[5220] = index;
     double k = s_.machine_to_program();
+    bool apply = s_.params[5210] != 0.0 && !s_.settings.disable_g92_persistence;
     for (int i = 0; i < AX_COUNT; i++) {
-        s_.origin_offset[i] = s_.params[5201 + 20 * index + i] * k;
-        bool apply = s_.params[5210] == 1.0 && !s_.settings.disable_g92_persistence;
-        s_.axis_offset[i] = apply ? s_.params[5211 + i] * k : 0.0;
+        double scale = (i >= AX_A && i <= AX_C) ? 1.0 : k;
+        s_.origin_offset[i] = s_.params[5201 + 20 * index + i] * scale;
+        s_.axis_offset[i] = apply ? s_.params[5211 + i] * scale : 0.0;
     }
     s_.rotation_xy = s_.params[5210 + 20 * index];
     emit_g5x();
@@ -118,12 +119,19 @@ std::shared_ptr<SourceFile> Interp::make_source(const std::string &path, const s
         f->lines.emplace_back(text, start, end - start);
         start = nl + 1;
     }
-    for (const std::string &l : f->lines) {
-        if (l.find_first_not_of(" \t") == std::string::npos) continue;
-        f->percent = is_percent(l);
+    for (size_t i = 0; i < f->lines.size(); i++) {
+        if (f->lines[i].find_first_not_of(" \t") == std::string::npos) continue;
+        f->percent = is_percent(f->lines[i]);
+        f->percent_line = i;
         break;
     }
     return f;
+}
+
+// True when line i is the '%' that ends a percent-delimited program.
+bool SourceFile::closes(size_t i) const
+{
+    return percent && i != percent_line && i < lines.size() && is_percent(lines[i]);
 }
 
 // Open the main program.
@@ -148,7 +156,6 @@ void Interp::open_source(const std::shared_ptr<SourceFile> &f)
     INTERP_FRAME();
     const std::string &path = f->path;
     remap_stack_.clear();
-    remap_call_line_.clear();
     calls_.resize(1);
     calls_[0] = CallFrame();
     calls_[0].file = f;
@@ -208,12 +215,12 @@ InterpStatus Interp::execute_next()
     }
     s_.sequence_number = (int)f.pos + 1;
     const std::string &line = f.file->lines[f.pos++];
-    if (is_percent(line) && f.file->percent && !skipping_) {
-        bool first = true;
-        for (size_t i = 0; i + 1 < f.pos; i++)
-            if (f.file->lines[i].find_first_not_of(" \t") != std::string::npos) first = false;
+    if (f.file->percent && f.pos - 1 == f.file->percent_line) {
         s_.line_text = line;
-        if (first) return INTERP_OK;
+        return INTERP_OK;
+    }
+    if (f.file->closes(f.pos - 1) && !skipping_) {
+        s_.line_text = line;
         out().finish();
         return INTERP_EXIT;
     }
@@ -245,10 +252,8 @@ InterpStatus Interp::run_line(const std::string &raw)
 {
     INTERP_FRAME();
     s_.line_text = raw;
-    remap_call_line_.clear();
     eof_error_ = false;
     error_stack_.clear();
-    interp_error_unwinding = false;
     try {
         return run_line_body(raw);
     } catch (const InterpError &e) {
@@ -261,10 +266,6 @@ InterpStatus Interp::run_line_body(const std::string &raw)
 {
     INTERP_FRAME();
     if (line_budget_ >= 0 && line_budget_-- == 0) throw InterpError("Line budget exhausted");
-    if (skipping_ && skip_fanuc_) {
-        fanuc_skip_done(raw);
-        return INTERP_OK;
-    }
     if (skipping_) {
         std::string name;
         OKind kind;
@@ -278,12 +279,12 @@ InterpStatus Interp::run_line_body(const std::string &raw)
     return execute_block(b);
 }
 
-// Record an error (echoing the generated call line of a remap that failed to start) and unwind.
+// Record an error (an InterpErrorAt names its own line, e.g. the call line a remap generates) and unwind.
 InterpStatus Interp::fail(const InterpError &e, const std::string &raw)
 {
-    interp_error_unwinding = false;
     error_ = e.what();
-    error_line_ = remap_call_line_.empty() ? raw : remap_call_line_;
+    auto at = dynamic_cast<const InterpErrorAt *>(&e);
+    error_line_ = at ? at->line() : raw;
     unwind_after_error();
     return INTERP_ERROR;
 }
@@ -293,7 +294,6 @@ void Interp::unwind_after_error()
 {
     INTERP_FRAME();
     remap_stack_.clear();
-    remap_call_line_.clear();
     while (calls_.size() > 1) pop_call();
     skipping_ = false;
     nurbs_open_ = false;
@@ -345,12 +345,16 @@ bool Interp::load_ini(const std::string &path)
     st.oword_warnonly = flag("OWORD_WARNONLY", "RS274NGC", false);
     st.disable_fanuc_style_sub = flag("DISABLE_FANUC_STYLE_SUB", "RS274NGC", false);
     st.ini_vars = flag("INI_VARS", "RS274NGC", true);
+    st.loop_limit = (long)real("MAX_LOOP_ITERATIONS", "RS274NGC", (double)st.loop_limit);
+    st.total_loop_limit =
+        (long)real("MAX_TOTAL_LOOP_ITERATIONS", "RS274NGC", (double)st.total_loop_limit);
     st.hal_pin_vars = flag("HAL_PIN_VARS", "RS274NGC", true);
     st.tool_change_quill_up = flag("TOOL_CHANGE_QUILL_UP", "EMCIO", false);
     st.tool_change_at_g30 = flag("TOOL_CHANGE_AT_G30", "EMCIO", false);
     st.tool_change_with_spindle_on = flag("TOOL_CHANGE_WITH_SPINDLE_ON", "EMCIO", false);
     st.random_toolchanger = flag("RANDOM_TOOLCHANGER", "EMCIO", false);
-    if (auto n = ini.FindInt("SPINDLES", "TRAJ")) st.spindles = (int)std::clamp(*n, 1LL, (long long)SPINDLE_COUNT);
+    auto spindles = ini.FindInt("SPINDLES", "TRAJ");
+    if (spindles && *spindles >= 1 && *spindles <= SPINDLE_COUNT) s_.num_spindles = *spindles;
     auto units = ini.Find("LINEAR_UNITS", "TRAJ");
     st.metric_machine = !units ? -1 : *units == "inch" ? 0 : 1;
     if (auto v = ini.Find("PROGRAM_PREFIX", "DISPLAY")) st.program_prefix = IniFile::TildeExpand(*v);

@@ -38,8 +38,7 @@ enum RemapPhase { REMAP_PROLOG, REMAP_BODY_NGC, REMAP_BODY_PY, REMAP_EPILOG };
 struct RemapCall {
     const RemapDef *def = nullptr;
     Block block;                   // the block that holds the code; the code itself is consumed
-    int resume_step = 0;           // block step to continue with when the remap completes
-    bool finish = false;           // the block already asked for execute-finish before the remap
+    size_t resume_step = 0;        // block step to continue with when the remap completes
     size_t frame = 0;              // index in the call stack of the frame the remap pushed
     RemapPhase phase = REMAP_PROLOG;
     PyGenerator generator;         // set while a prolog, body or epilog is suspended

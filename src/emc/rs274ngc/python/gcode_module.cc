@@ -124,7 +124,6 @@ PyObject *parse(PyObject *, PyObject *args)
         st = run_program(interp, canon, file, unitcode, initcode);
         if (st == INTERP_ERROR && last_error().empty()) last_error() = interp.error_text();
     } catch (const InterpError &e) {
-        interp_error_unwinding = false;
         last_error() = e.what();
         st = INTERP_ERROR;
     }

@@ -20,7 +20,6 @@ PyObject *call(F f)
     try {
         f();
     } catch (const InterpError &e) {
-        interp_error_unwinding = false;
         PyErr_SetString(PyExc_RuntimeError, e.what());
         return nullptr;
     }

@@ -174,24 +174,22 @@ InterpStatus Interp::execute_nested(const std::string &text)
 {
     INTERP_FRAME();
     size_t depth = calls_.size(), remaps = remap_stack_.size();
-    std::string outer_line = s_.line_text, outer_call_line = remap_call_line_;
+    std::string outer_line = s_.line_text;
     InterpStatus st = INTERP_OK;
     try {
         s_.line_text = text;
-        remap_call_line_.clear();
         st = run_line_body(text);
         while (st != INTERP_EXIT && (calls_.size() > depth || remap_stack_.size() > remaps))
             st = remap_suspended() && remap_stack_.size() > remaps ? resume_remap() : run_frame_line();
     } catch (const InterpError &e) {
-        interp_error_unwinding = false;
         error_ = e.what();
-        error_line_ = remap_call_line_.empty() ? s_.line_text : remap_call_line_;
+        auto at = dynamic_cast<const InterpErrorAt *>(&e);
+        error_line_ = at ? at->line() : s_.line_text;
         while (remap_stack_.size() > remaps) remap_stack_.pop_back();
         while (calls_.size() > depth) pop_call();
         st = INTERP_ERROR;
     }
     s_.line_text = outer_line;
-    remap_call_line_ = outer_call_line;
     return st;
 }
 

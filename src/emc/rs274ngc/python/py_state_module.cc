@@ -31,7 +31,6 @@ bool guarded(PyObject *type, F f)
         f();
         return true;
     } catch (const InterpError &e) {
-        interp_error_unwinding = false;
         PyErr_SetString(type, e.what());
         return false;
     }

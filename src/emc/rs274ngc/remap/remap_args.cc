@@ -41,7 +41,7 @@ bool Interp::remap_active(const RemapDef *def) const
 }
 
 // The remap this step of b runs instead of its built-in behaviour, or nullptr.
-const RemapDef *Interp::remap_due(const Block &b, const StepDef &step) const
+const RemapDef *Interp::remap_due(const Block &b, const ExecStep &step) const
 {
     const RemapDef *def = nullptr;
     if (step.slot == SLOT_NONE || !have_remaps_) return nullptr;
@@ -60,19 +60,20 @@ const RemapDef *Interp::remap_due(const Block &b, const StepDef &step) const
     throw InterpError("Remapped code " + def->code + " used inside its own remap procedure");
 }
 
-// Collect def's argspec words from b: positional (with '@') or named; missing required words are an error.
+// Collect def's argspec words from b: positional (with '@') or named; missing required words are an error,
+// and with check_state the '^' (spindle turning) and '>' (feed set) conditions of the moment it runs.
 void Interp::remap_words(const Block &b, const RemapDef &def, std::vector<double> &positional,
-                         std::map<std::string, double> &named) const
+                         std::map<std::string, double> &named, bool check_state) const
 {
     bool at = def.argspec.find('@') != std::string::npos;
     std::string missing;
     for (char c : def.argspec) {
         char lc = (char)tolower((unsigned char)c);
         if (c == '@') continue;
-        if (c == '^' && s_.speed[0] <= 0)
-            throw InterpError("user-defined " + def.code + ": spindle speed must be greater than zero");
-        if (c == '>' && s_.feed_rate <= 0)
-            throw InterpError("user-defined " + def.code + ": feed rate must be greater than zero");
+        if (c == '^' && check_state && s_.speed[0] <= 0)
+            throw InterpError(def.code + ": spindle speed must be greater than 0");
+        if (c == '>' && check_state && s_.feed_rate <= 0)
+            throw InterpError(def.code + ": feed rate must be greater than 0");
         if (c == '^' || c == '>') continue;
         if (lc == 'n') {
             named["n"] = b.has_line_number ? b.line_number : (double)s_.sequence_number;
@@ -94,16 +95,36 @@ void Interp::check_remap_args(const Block &b)
 {
     INTERP_FRAME();
     if (!have_remaps_) return;
-    const StepDef *steps = block_steps();
-    for (int i = 0; steps[i].run; i++) {
+    size_t count;
+    const ExecStep *steps = exec_steps(count);
+    for (size_t i = 0; i < count; i++) {
         const RemapDef *def = remap_due(b, steps[i]);
         if (!def) continue;
         std::vector<double> positional;
         std::map<std::string, double> named;
-        remap_call_line_ = "O <" + def->proc() + "> call ";
-        remap_words(b, *def, positional, named);
-        remap_call_line_.clear();
+        try {
+            remap_words(b, *def, positional, named, false);
+        } catch (const InterpErrorAt &) {
+            throw;
+        } catch (const InterpError &e) {
+            throw InterpErrorAt(e.what(), "O <" + def->proc() + "> call ");
+        }
     }
+}
+
+// True when word letter c ('a'..'z') is an argument of a remapped code of the block (so it is used).
+bool Interp::remap_uses_word(const Block &b, char c) const
+{
+    if (!have_remaps_) return false;
+    size_t count;
+    const ExecStep *steps = exec_steps(count);
+    for (size_t i = 0; i < count; i++) {
+        const RemapDef *def = remap_due(b, steps[i]);
+        if (!def) continue;
+        for (char a : def->argspec)
+            if (isalpha((unsigned char)a) && tolower((unsigned char)a) == c) return true;
+    }
+    return false;
 }
 
 // Remove the remapped code from the block so the step's built-in behaviour leaves it alone.

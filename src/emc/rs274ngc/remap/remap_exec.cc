@@ -8,23 +8,28 @@ constexpr size_t MAX_REMAP_LEVELS = 10;
 
 } // namespace
 
-// Start def's procedure for the code in b found at block step `step`.
-InterpStatus Interp::start_remap(const Block &b, const RemapDef &def, int step, bool finish)
+// Start def's procedure for the code in b found at block step `step`; errors name the generated call line.
+InterpStatus Interp::start_remap(const Block &b, const RemapDef &def, size_t step)
 {
     INTERP_FRAME();
+    std::string call_line = "O <" + def.proc() + "> call ";
     if (remap_stack_.size() >= MAX_REMAP_LEVELS)
-        throw InterpError("Remapped codes nested more than " + std::to_string(MAX_REMAP_LEVELS) +
-                          " levels deep (" + def.code + ")");
+        throw InterpErrorAt("Remapped codes nested more than " + std::to_string(MAX_REMAP_LEVELS) +
+                            " levels deep (" + def.code + ")", call_line);
     RemapCall rc;
     rc.def = &def;
     rc.block = b;
     rc.resume_step = step;
-    rc.finish = finish;
-    rc.call_line = "O <" + def.proc() + "> call ";
-    remap_call_line_ = rc.call_line;
-    if (def.needs_python()) python(("REMAP=" + def.code).c_str());
+    rc.call_line = call_line;
     std::vector<double> positional;
-    remap_words(b, def, positional, rc.words);
+    try {
+        if (def.needs_python()) python(("REMAP=" + def.code).c_str());
+        remap_words(b, def, positional, rc.words, true);
+    } catch (const InterpErrorAt &) {
+        throw;
+    } catch (const InterpError &e) {
+        throw InterpErrorAt(e.what(), call_line);
+    }
     remap_stack_.push_back(std::move(rc));
     push_remap_frame(remap_stack_.back(), positional, remap_stack_.back().words);
     RemapCall &top = remap_stack_.back();
@@ -57,14 +62,14 @@ InterpStatus Interp::remap_body()
         return remap_outcome(py_->call_remap(rc.def->python, rc.words), REMAP_BODY_PY);
     }
     SubDef sub;
-    if (!find_sub(rc.def->ngc, sub))
-        throw InterpError("Remap procedure " + rc.def->ngc + " for " + rc.def->code + " not found");
+    if (!lookup_sub(rc.def->ngc, sub))
+        throw InterpErrorAt("Remap procedure " + rc.def->ngc + " for " + rc.def->code + " not found",
+                            rc.call_line);
     CallFrame &f = calls_[rc.frame];
     f.file = sub.file;
     f.pos = sub.line + 1;
     f.sub_line = sub.line;
     rc.phase = REMAP_BODY_NGC;
-    remap_call_line_.clear();
     return INTERP_OK;
 }
 
@@ -79,18 +84,19 @@ InterpStatus Interp::remap_after_body()
     return remap_outcome(py_->call_remap(rc.def->epilog, rc.words), REMAP_EPILOG);
 }
 
-// Leave the procedure's call level and run the rest of the block that held the remapped code.
+// Leave the procedure's call level and run the rest of the block that held the remapped code; a remapped
+// G code stays the motion mode (axis words alone run it again).
 InterpStatus Interp::remap_complete()
 {
     INTERP_FRAME();
     RemapCall rc = std::move(remap_stack_.back());
     remap_stack_.pop_back();
     while (calls_.size() > rc.frame) pop_call();
-    remap_call_line_.clear();
-    bool finish = rc.finish || py_finish_request_;
+    if (py_finish_request_) rc.block.execute_finish = true;
     py_finish_request_ = false;
+    if (rc.def->letter == 'G') s_.motion_mode = rc.def->number;
     consume_remapped(rc.block, *rc.def);
-    return run_steps(rc.block, rc.resume_step, finish);
+    return execute_steps(rc.block, rc.resume_step);
 }
 
 // Act on what a prolog, Python body or epilog returned.
@@ -98,7 +104,11 @@ InterpStatus Interp::remap_outcome(const PyOutcome &o, RemapPhase phase)
 {
     INTERP_FRAME();
     RemapCall &rc = remap_stack_.back();
-    if (o.kind == PyOutcome::ERROR) throw InterpError(o.error);
+    if (o.kind == PyOutcome::ERROR) {
+        bool own_line = phase != REMAP_EPILOG || rc.def->ngc.empty();
+        if (own_line) throw InterpErrorAt(o.error, rc.call_line);
+        throw InterpError(o.error);
+    }
     if (o.kind == PyOutcome::SUSPEND) {
         rc.generator = o.generator;
         return INTERP_EXECUTE_FINISH;
@@ -121,8 +131,6 @@ InterpStatus Interp::resume_remap()
     INTERP_FRAME();
     RemapCall &rc = remap_stack_.back();
     PyGenerator gen = rc.generator;
-    bool own_line = rc.phase != REMAP_EPILOG || rc.def->ngc.empty();
-    remap_call_line_ = own_line ? rc.call_line : "";
     return remap_outcome(py_->resume(gen), rc.phase);
 }
 
