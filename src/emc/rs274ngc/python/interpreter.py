@@ -81,6 +81,9 @@ class Params:
     def __call__(self):
         return self.locals() + self.globals()
 
+    def __len__(self):
+        return len(self.locals()) + len(self.globals())
+
     def locals(self):
         return _state.param_names("locals")
 

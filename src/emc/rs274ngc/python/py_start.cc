@@ -88,6 +88,10 @@ bool py_process_start(std::string &err)
     }
     GilLock gil;
     if (p.ready) return true;
+    if (p.embedded) {   // code that reads sys.argv (argparse, GUI toolkits) finds one
+        PyRef argv(Py_BuildValue("[s]", ""));
+        if (!argv || PySys_SetObject("argv", argv.get()) != 0) PyErr_Clear();
+    }
     std::string lib_python = plugin_dir() + "/python";
     PyRef state(make_state_module()), canon(make_canon_module());
     bool ok = add_path(lib_python, -1) && register_module("_rs274ngc", state.get()) &&
