@@ -28,9 +28,12 @@ static void fill_cycle_in(void)
         in->at_speed = sp->at_speed;
         in->index_enable = *mot->pins->spindle[s].index_enable != 0;
     }
-    cycle_in.indexer_unlocked = 1;
-    if (mot->indexer_joint >= 0 && mot->pins->joint[mot->indexer_joint].is_unlocked)
-        cycle_in.indexer_unlocked = *mot->pins->joint[mot->indexer_joint].is_unlocked != 0;
+    /* Not unlocked until the planner has named the joint and its is-unlocked pin answered
+     * (a joint without the pin counts as unlocked once named). */
+    cycle_in.indexer_unlocked = 0;
+    if (mot->indexer_joint >= 0)
+        cycle_in.indexer_unlocked = !mot->pins->joint[mot->indexer_joint].is_unlocked ||
+            *mot->pins->joint[mot->indexer_joint].is_unlocked;
 }
 
 /* Synchronised digital/analog outputs that take effect this cycle. */
