@@ -151,3 +151,14 @@ const mot_shadow_seg_t *mot_executing_segment(void)
         return NULL;
     return &mot->shadow[mot->shadow_head];
 }
+
+/* Coordinated motion at rest: the planner is done and the joints' interpolation caught up. */
+int mot_coord_settled(void)
+{
+    if (!mot->tp_ops->is_done(mot->tp))
+        return 0;
+    for (int j = 0; j < mot->num_kins_joints && mot->interp_rate > 1; j++)
+        if (!cubic_settled(&mot->joint[j].cubic))
+            return 0;
+    return 1;
+}
