@@ -105,6 +105,8 @@ static int planner_cycle(double *joints)
     EmcPose pos;
 
     fill_cycle_in();
+    if (mot->paused)
+        mot->tp_ops->pause(mot->tp);    /* motion's pause holds even across a finishing abort */
     mot->tp_ops->run_cycle(mot->tp, &cycle_in, &cycle_out);
     take_report(&cycle_out);
     apply_synced_io(&cycle_out);
