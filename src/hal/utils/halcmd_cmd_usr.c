@@ -26,7 +26,7 @@ static void hc_sleep_ms(long ms)
     nanosleep(&ts, NULL);
 }
 
-/* Parse loadusr's own options; returns the index of the program or -1. */
+/* Parse loadusr's own options; returns the index of the program or -1 (reported). */
 static int hc_usr_options(int argc, char *argv[], hc_usr_opts_t *o)
 {
     char *av[HC_MAX_TOKENS + 2];
@@ -42,9 +42,19 @@ static int hc_usr_options(int argc, char *argv[], hc_usr_opts_t *o)
         else if (c == 'W') o->wait_ready = 1;
         else if (c == 'i') o->ignore_status = 1;
         else if (c == 'n') snprintf(o->name, sizeof o->name, "%s", optarg);
-        else return -1;
+        else if (optopt == 'n') {
+            hc_error("loadusr: option -n needs a component name");
+            return -1;
+        } else {
+            hc_error("loadusr: unknown option '-%c'", optopt);
+            return -1;
+        }
     }
-    return optind - 1 < argc ? optind - 1 : -1;
+    if (optind - 1 >= argc) {
+        hc_error("loadusr: no program given (usage: loadusr [-W] [-w] [-i] [-n name] program [args...])");
+        return -1;
+    }
+    return optind - 1;
 }
 
 /* Default component name: basename of prog without its last extension. */

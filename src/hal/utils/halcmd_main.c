@@ -68,9 +68,9 @@ static int hc_run_file(const char *name)
     FILE *f = stdin;
     int rc;
     if (name) {
-        f = fopen(name, "r");
+        f = hc_open_hal_file(name);
         if (!f) {
-            fprintf(stderr, "Could not open command file '%s'\n", name);
+            fprintf(stderr, "Could not open command file '%s': %s\n", name, strerror(errno));
             return -2;
         }
     }
