@@ -1,4 +1,5 @@
 /* hal_thread.c: realtime threads: creation with period/priority rules, deletion, start/stop. */
+#include <limits.h>
 #include "hal_internal.h"
 #include <stdio.h>
 
@@ -137,6 +138,15 @@ static int hal_thread_precheck(const char *name, unsigned long period_nsec)
     }
     if (period_nsec == 0) {
         HAL_ERR("create_thread called with period of zero\n");
+        return -EINVAL;
+    }
+    if (period_nsec < RTAPI_MIN_PERIOD_NS) {
+        HAL_ERR("thread '%s': period %lu ns is shorter than %d ns; no machine runs a thread that often\n",
+                name ? name : "", period_nsec, RTAPI_MIN_PERIOD_NS);
+        return -EINVAL;
+    }
+    if (period_nsec > LONG_MAX / 4) {
+        HAL_ERR("thread '%s': period %lu ns is too long\n", name ? name : "", period_nsec);
         return -EINVAL;
     }
     if (hal_data->lock & HAL_LOCK_CONFIG) {

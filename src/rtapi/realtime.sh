@@ -25,16 +25,15 @@ remove_shm() {
 
 # master_pids: pids of live rtapi_app processes of this instance
 master_pids() {
-    local d env state
-    for d in /proc/[0-9]*; do
-        [ "$(cat "$d/comm" 2>/dev/null)" = rtapi_app ] || continue
-        state=$(sed -n 's/^State:[[:space:]]*\(.\).*/\1/p' "$d/status" 2>/dev/null)
+    local pid env state
+    for pid in $(pgrep -x rtapi_app); do
+        state=$(sed -n 's/^State:[[:space:]]*\(.\).*/\1/p' "/proc/$pid/status" 2>/dev/null)
         [ -n "$state" ] && [ "$state" != Z ] || continue
-        env=$( (tr "\\0" "\\n" < "$d/environ") 2>/dev/null | sed -n "s/^OPENEMC_INSTANCE=//p")
+        env=$( (tr "\\0" "\\n" < "/proc/$pid/environ") 2>/dev/null | sed -n "s/^OPENEMC_INSTANCE=//p")
         env=${env:-0}
         case "$env" in *[!0-9]*) env=0 ;; esac
         [ "$env" -gt 255 ] && env=$(( 1 + env % 255 ))
-        [ "$env" = "$instance" ] && echo "${d#/proc/}"
+        [ "$env" = "$instance" ] && echo "$pid"
     done
 }
 
