@@ -5,9 +5,15 @@
 here=$(cd "$(dirname "$0")" && pwd)
 if [ -x "$here/rtapi_app" ]; then RTAPI_APP=$here/rtapi_app; else RTAPI_APP=rtapi_app; fi
 instance=${OPENEMC_INSTANCE:-0}
-case "$instance" in ''|*[!0-9]*) instance=0 ;; esac
-# numbers above 255 fold into 1..255 exactly as rtapi_instance() does
-[ "$instance" -gt 255 ] && instance=$(( 1 + instance % 255 ))
+# a decimal 0..255, as rtapi_instance() accepts; anything else would share another session
+case "$instance" in
+    [0-9]|[0-9][0-9]|[0-9][0-9][0-9]) instance=$((10#$instance)) ;;
+    *) instance=256 ;;
+esac
+if [ "$instance" -gt 255 ]; then
+    echo "realtime: OPENEMC_INSTANCE='$OPENEMC_INSTANCE' is not an instance number 0..255" >&2
+    exit 1
+fi
 
 # instance_key BASE: the SysV key this instance uses for a LinuxCNC base key
 instance_key() {
@@ -30,9 +36,11 @@ master_pids() {
         state=$(sed -n 's/^State:[[:space:]]*\(.\).*/\1/p' "/proc/$pid/status" 2>/dev/null)
         [ -n "$state" ] && [ "$state" != Z ] || continue
         env=$( (tr "\\0" "\\n" < "/proc/$pid/environ") 2>/dev/null | sed -n "s/^OPENEMC_INSTANCE=//p")
-        env=${env:-0}
-        case "$env" in *[!0-9]*) env=0 ;; esac
-        [ "$env" -gt 255 ] && env=$(( 1 + env % 255 ))
+        case "$env" in
+            '') env=0 ;;
+            [0-9]|[0-9][0-9]|[0-9][0-9][0-9]) env=$((10#$env)) ;;
+            *) continue ;;
+        esac
         [ "$env" = "$instance" ] && echo "$pid"
     done
 }
