@@ -153,11 +153,7 @@ static int hal_thread_precheck(const char *name, unsigned long period_nsec)
         HAL_ERR("create_thread called while HAL is locked\n");
         return -EPERM;
     }
-    if (!name || strlen(name) > HAL_NAME_LEN) {
-        HAL_ERR("thread name '%s' is too long\n", name ? name : "");
-        return -EINVAL;
-    }
-    return 0;
+    return halpr_name_check("thread", name, HAL_NAME_LEN);
 }
 
 /* Create a periodic realtime thread (RT process only). */

@@ -177,7 +177,7 @@ int hc_cmd_waitusr(int argc, char *argv[])
         return -1;
     }
     while (hal_comp_by_name(argv[0], &info) == 0) {
-        if (info.pid > 0 && kill(info.pid, 0) < 0 && errno == ESRCH)
+        if (!info.owner_alive)
             break;
         waitpid(-1, NULL, WNOHANG);
         hc_sleep_ms(200);
@@ -185,12 +185,19 @@ int hc_cmd_waitusr(int argc, char *argv[])
     return 0;
 }
 
-/* Send SIGTERM to one user component's process (never to halcmd itself). */
+/* Send SIGTERM to one user component's process (never to halcmd itself); a component whose
+   process is gone (killed before it could leave HAL) is removed here instead. */
 static void hc_term_comp(const char *name)
 {
     hal_comp_info_t info;
     if (hal_comp_by_name(name, &info) < 0 || info.type != HAL_COMP_USER)
         return;
+    if (!info.owner_alive) {
+        if (hal_comp_remove_orphan(name) == 0)
+            hc_warning("component '%s': its process %d no longer exists; removed it from HAL",
+                       name, info.pid);
+        return;
+    }
     if (info.pid > 0 && info.pid != getpid())
         kill(info.pid, SIGTERM);
 }
