@@ -4,6 +4,14 @@
 
 here=$(cd "$(dirname "$0")" && pwd)
 if [ -x "$here/rtapi_app" ]; then RTAPI_APP=$here/rtapi_app; else RTAPI_APP=rtapi_app; fi
+case "${1:-}" in
+    --help|-h)
+        echo "Usage: realtime {start|load|stop|unload|restart|status|verify}"
+        echo "Starts, stops or checks the rtapi_app master of instance \$OPENEMC_INSTANCE (0..255,"
+        echo "default 0); stop also removes that instance's shared memory. verify prints the"
+        echo "kind of realtime this machine offers and exits 0 only when it is realtime."
+        exit 0 ;;
+esac
 instance=${OPENEMC_INSTANCE:-0}
 # a decimal 0..255, as rtapi_instance() accepts; anything else would share another session
 case "$instance" in

@@ -1,5 +1,6 @@
 /* halcmd_main.c: halcmd entry point: options, HAL attach, argv or file mode, exit status. */
 #include <errno.h>
+#include <getopt.h>
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -28,9 +29,10 @@ static void hc_on_signal(int sig)
 /* Parse the options; returns -1 on an unknown option. */
 static int hc_parse_options(int argc, char *argv[], hc_opts_t *o)
 {
+    static const struct option longopts[] = {{"help", no_argument, NULL, 'h'}, {NULL, 0, NULL, 0}};
     int c;
     o->msg_level = RTAPI_MSG_ERR;
-    while ((c = getopt(argc, argv, "+RCfi:kqQsvVhe")) != -1) {
+    while ((c = getopt_long(argc, argv, "+RCfi:kqQsvVhe", longopts, NULL)) != -1) {
         switch (c) {
         case 'R': o->release = 1; break;
         case 'C': o->complete = 1; break;

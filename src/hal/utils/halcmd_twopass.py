@@ -224,8 +224,18 @@ def halfiles(ini, entries):
     return files
 
 
+USAGE = """Usage: halcmd_twopass [halcmd options] file.ini
+Runs the [HAL]HALFILE files of file.ini in two passes, as [HAL]TWOPASS asks: first every
+loadrt/loadusr (repeated loads of one module merged into one), then all other commands.
+halcmd options (-k, -v, ...) are passed to halcmd. TWOPASS words: verbose, nodelete.
+"""
+
+
 def main(argv):
     """halcmd_twopass [halcmd options] file.ini"""
+    if argv and argv[0] in ("--help", "-h"):
+        sys.stdout.write(USAGE)
+        return 0
     if not argv or argv[-1].startswith("-"):
         fail("Usage: halcmd_twopass [halcmd options] file.ini")
     ini, opts = argv[-1], argv[:-1]

@@ -55,6 +55,12 @@ proc haltcl_interactive {} {
 
 fconfigure stdout -buffering line
 set haltcl_args $argv
+if {[lindex $haltcl_args 0] in {--help -h}} {
+    puts "Usage: haltcl \[-i INIFILE\] \[FILE.tcl \[args...\]\]"
+    puts "Tcl with a 'hal' command that runs halcmd commands; with -i, INIFILE's values are the"
+    puts "arrays ::SECTION(KEY). Without FILE an interactive prompt reads commands."
+    exit 0
+}
 if {[lindex $haltcl_args 0] eq "-i"} {
     set ::HALTCL_INI [lindex $haltcl_args 1]
     if {[catch {haltcl_read_ini $::HALTCL_INI} err]} {
