@@ -15,7 +15,7 @@ ifneq ($(CI),)
 WARN_FLAGS += -Werror
 endif
 OPT_FLAGS ?= -O2 -g
-INCLUDE_FLAGS := -Isrc -Isrc/rtapi -Isrc/hal -Isrc/emc/kinematics -Isrc/emc/motion -Isrc/emc/tp -Iinclude
+INCLUDE_FLAGS := -Isrc -Isrc/rtapi -Isrc/hal -Isrc/emc/kinematics -Isrc/emc/motion -Isrc/emc/tp -Isrc/libnml -Isrc/emc/nml_intf -Iinclude
 BASE_FLAGS := $(OPT_FLAGS) $(WARN_FLAGS) -fPIC -MMD -MP $(ASAN_FLAGS) $(INCLUDE_FLAGS)
 CFLAGS_ALL = -std=gnu11 $(BASE_FLAGS) $(EXTRA_CFLAGS)
 CXXFLAGS_ALL = -std=gnu++17 $(BASE_FLAGS) $(EXTRA_CXXFLAGS)
