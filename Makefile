@@ -19,7 +19,7 @@ configure:
 
 # Plain `make` on a fresh clone (or after configure.ac changed) configures first: GNU make remakes
 # the included Makefile.inc and restarts. A tree configured before keeps its options (--recheck).
-ifeq ($(filter clean distclean configure setup,$(MAKECMDGOALS)),)
+ifeq ($(filter clean distclean configure setup run check,$(MAKECMDGOALS)),)
 Makefile.inc: configure.ac Makefile.inc.in
 	@echo "Makefile: configuring (autoreconf -fi, then configure)"
 	@autoreconf -fi || { echo "Makefile: autoreconf failed; scripts/install-deps lists the Debian packages the build needs" >&2; exit 1; }

@@ -1,7 +1,8 @@
 #!/bin/bash
 # plain-make: `make` in an unconfigured tree configures it and builds; a second `make` does not
 # configure again; a newer configure.ac reconfigures keeping the options (config.status
-# --recheck); `make clean` never configures; a failing configure says what to do.
+# --recheck); `make clean` never configures; a failing configure says what to do; `make check`
+# installs the packages before it configures (its own set-up step).
 # The real Makefile runs on a tiny tree, with autoreconf and configure replaced by stubs.
 set -e
 work=$(mktemp -d)
@@ -48,6 +49,15 @@ echo "> clean and distclean of an unconfigured tree"
 make --no-print-directory distclean > /dev/null 2>&1
 m clean
 cat log
+echo "> make check in an unconfigured tree"
+mkdir -p scripts
+printf '#!/bin/sh\necho "stub: install-deps" >> log\n' > scripts/install-deps
+printf '#!/bin/sh\necho "stub: runtests $*" >> log\n' > scripts/runtests
+chmod +x scripts/install-deps scripts/runtests
+make --no-print-directory distclean > /dev/null 2>&1; : > log
+m check
+cat log; : > log
+make --no-print-directory distclean > /dev/null 2>&1
 echo "> configure fails"
 FAIL_CONFIGURE=1 m || true
 cat log
