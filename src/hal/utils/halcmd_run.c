@@ -142,40 +142,40 @@ static void hc_text_clear(hc_text_t *t)
 }
 
 /* Read one physical line (without its newline) into line. 1 = a line, 0 = end of file,
-   -1 = read error, a NUL byte or a line longer than HC_PHYS_LINE_MAX (reported). */
+   -1 = a NUL byte (reported), -2 = read error or a line longer than HC_PHYS_LINE_MAX (reported;
+   the rest of the file is not read, even with -k: an endless line would never end). */
 static int hc_read_line(FILE *f, hc_text_t *line)
 {
     char chunk[256];
     size_t n = 0, total = 0;
     int c, nul = 0;
     hc_text_clear(line);
-    while ((c = getc(f)) != EOF && c != '\n') {
+    while ((c = getc(f)) != EOF && c != '\n' && total <= HC_PHYS_LINE_MAX) {
         nul |= c == '\0';
+        chunk[n++] = (char)c;
         total++;
-        if (total <= HC_PHYS_LINE_MAX)
-            chunk[n++] = (char)c;
         if (n == sizeof chunk) {
             if (hc_text_append(line, chunk, n) < 0)
-                return -1;
+                return -2;
             n = 0;
         }
     }
     if (ferror(f)) {
         hc.line++;
         hc_error("cannot read the file: %s", strerror(errno));
-        return -1;
+        return -2;
     }
     if (c == EOF && total == 0)
         return 0;
     hc.line++;
+    if (total > HC_PHYS_LINE_MAX) {
+        hc_error("line is longer than %d bytes; not reading the rest of the file", HC_PHYS_LINE_MAX);
+        return -2;
+    }
     if (n > 0 && hc_text_append(line, chunk, n) < 0)
-        return -1;
+        return -2;
     if (nul) {
         hc_error("line contains a NUL byte; HAL files are text");
-        return -1;
-    }
-    if (total > HC_PHYS_LINE_MAX) {
-        hc_error("line is %zu bytes long, longer than the %d allowed", total, HC_PHYS_LINE_MAX);
         return -1;
     }
     return 1;
@@ -203,7 +203,7 @@ int hc_run_stream(FILE *f, int continuation, int interactive)
             break;
         if (rc < 0) {
             failed = 1;
-            if (!hc.keep_going || ferror(f))
+            if (!hc.keep_going || rc == -2)
                 break;
         }
     }

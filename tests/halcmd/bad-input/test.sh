@@ -1,6 +1,7 @@
 #!/bin/bash
-# bad-input: long lines stay whole (a command hidden in a long comment never runs), NUL bytes,
-# directories and missing files given to source or -f, and loadusr without a program.
+# bad-input: long lines stay whole (a command hidden in a long comment never runs), endless lines
+# end the file, NUL bytes, directories and missing files given to source or -f, and loadusr
+# without a program.
 cd "$(dirname "$0")"
 realtime start 2> /dev/null || exit 1
 work=$(mktemp -d)
@@ -17,6 +18,9 @@ echo "> a line longer than 1 MiB"
 head -c 1100000 /dev/zero | tr '\0' '#' > "$work/huge.hal"
 printf '\nnewsig after_huge bit\n' >> "$work/huge.hal"
 halcmd -f "$work/huge.hal" 2>&1 | sed "s|$work/||"; echo "exit ${PIPESTATUS[0]}"
+echo "> an endless line (/dev/zero), also with -k"
+timeout 30 halcmd -f /dev/zero 2>&1; echo "exit $?"
+timeout 30 halcmd -k -f /dev/zero 2>&1; echo "exit $?"
 echo "> a NUL byte"
 printf 'newsig a bit\000newsig b bit\nnewsig c bit\n' > "$work/nul.hal"
 halcmd -f "$work/nul.hal" 2>&1 | sed "s|$work/||"; echo "exit ${PIPESTATUS[0]}"
