@@ -127,7 +127,8 @@ int hc_text_append(hc_text_t *t, const char *s, size_t n)
         t->text = text;
         t->cap = cap;
     }
-    memcpy(t->text + t->len, s, n);
+    if (n > 0)
+        memcpy(t->text + t->len, s, n);
     t->len += n;
     t->text[t->len] = '\0';
     return 0;

@@ -3,7 +3,11 @@
 set -e
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-gcc -O2 -Wall -Wextra -Werror -I"$HEADERS" -DULAPI -L"$LIBDIR" -o "$work/lookup" lookup.c -llinuxcncini
+# on a sanitizer build (configure --enable-asan) a program using the tree's libraries links the
+# sanitizer runtimes too, as halcompile does
+asan=$(sed -n 's/^ASAN_FLAGS *= *//p' "$EMC2_HOME/Makefile.inc")
+# shellcheck disable=SC2086
+gcc -O2 -Wall -Wextra -Werror $asan -I"$HEADERS" -DULAPI -L"$LIBDIR" -o "$work/lookup" lookup.c -llinuxcncini
 # l TYPE KEY SECTION: one lookup with its exit status
 l() { "$work/lookup" values.ini "$@" 2>&1 || echo "[exit $?]"; }
 l s TEXT -
