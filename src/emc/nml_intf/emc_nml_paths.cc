@@ -42,7 +42,7 @@ std::string emc_nml_file_for_ini(const std::string &ini_path, std::string *error
     IniFile ini;
     ini.SetQuiet(true);
     if (!ini.Open(ini_path)) {
-        if (error) *error = ini_path + ": " + ini.ErrorText();
+        if (error) *error = ini_path + ": cannot read the INI file";
         return "";
     }
     std::optional<std::string> value = ini.Find("NML_FILE", "EMC");

@@ -313,3 +313,13 @@ uint64_t tooldata_generation(const tooldata_t *td)
 {
     return __atomic_load_n(&td->shm->generation, __ATOMIC_ACQUIRE);
 }
+
+/* Alive unless the segment was marked for removal (its creator closed it). */
+int tooldata_alive(const tooldata_t *td)
+{
+    struct shmid_ds ds;
+
+    if (shmctl(td->shmid, IPC_STAT, &ds) < 0)
+        return 0;
+    return (ds.shm_perm.mode & SHM_DEST) ? 0 : 1;
+}

@@ -59,6 +59,8 @@ int tooldata_get(tooldata_t *td, int idx, tooldata_entry_t *out);
 int tooldata_find(tooldata_t *td, int toolno, tooldata_entry_t *out);
 /* Current generation (0 = never published). */
 uint64_t tooldata_generation(const tooldata_t *td);
+/* 1 while the segment is current, 0 once its creator removed it (reopen to reattach). */
+int tooldata_alive(const tooldata_t *td);
 
 #ifdef __cplusplus
 }
