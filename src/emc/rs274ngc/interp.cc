@@ -71,10 +71,11 @@ void Interp::init()
     s_.origin_index = index;
     s_.params[5220] = index;
     double k = s_.machine_to_program();
+    bool apply = s_.params[5210] != 0.0 && !s_.settings.disable_g92_persistence;
     for (int i = 0; i < AX_COUNT; i++) {
-        s_.origin_offset[i] = s_.params[5201 + 20 * index + i] * k;
-        bool apply = s_.params[5210] == 1.0 && !s_.settings.disable_g92_persistence;
-        s_.axis_offset[i] = apply ? s_.params[5211 + i] * k : 0.0;
+        double scale = (i >= AX_A && i <= AX_C) ? 1.0 : k;
+        s_.origin_offset[i] = s_.params[5201 + 20 * index + i] * scale;
+        s_.axis_offset[i] = apply ? s_.params[5211 + i] * scale : 0.0;
     }
     s_.rotation_xy = s_.params[5210 + 20 * index];
     emit_g5x();
@@ -117,12 +118,19 @@ std::shared_ptr<SourceFile> Interp::make_source(const std::string &path, const s
         f->lines.emplace_back(text, start, end - start);
         start = nl + 1;
     }
-    for (const std::string &l : f->lines) {
-        if (l.find_first_not_of(" \t") == std::string::npos) continue;
-        f->percent = is_percent(l);
+    for (size_t i = 0; i < f->lines.size(); i++) {
+        if (f->lines[i].find_first_not_of(" \t") == std::string::npos) continue;
+        f->percent = is_percent(f->lines[i]);
+        f->percent_line = i;
         break;
     }
     return f;
+}
+
+// True when line i is the '%' that ends a percent-delimited program.
+bool SourceFile::closes(size_t i) const
+{
+    return percent && i != percent_line && i < lines.size() && is_percent(lines[i]);
 }
 
 // Open the main program.
@@ -194,12 +202,12 @@ InterpStatus Interp::execute_next()
     }
     s_.sequence_number = (int)f.pos + 1;
     const std::string &line = f.file->lines[f.pos++];
-    if (is_percent(line) && f.file->percent && !skipping_) {
-        bool first = true;
-        for (size_t i = 0; i + 1 < f.pos; i++)
-            if (f.file->lines[i].find_first_not_of(" \t") != std::string::npos) first = false;
+    if (f.file->percent && f.pos - 1 == f.file->percent_line) {
         s_.line_text = line;
-        if (first) return INTERP_OK;
+        return INTERP_OK;
+    }
+    if (f.file->closes(f.pos - 1) && !skipping_) {
+        s_.line_text = line;
         out().finish();
         return INTERP_EXIT;
     }
@@ -221,13 +229,8 @@ InterpStatus Interp::run_line(const std::string &raw)
     s_.line_text = raw;
     eof_error_ = false;
     error_stack_.clear();
-    interp_error_unwinding = false;
     try {
         if (line_budget_ >= 0 && line_budget_-- == 0) throw InterpError("Line budget exhausted");
-        if (skipping_ && skip_fanuc_) {
-            fanuc_skip_done(raw);
-            return INTERP_OK;
-        }
         if (skipping_) {
             std::string name;
             OKind kind;
@@ -240,9 +243,9 @@ InterpStatus Interp::run_line(const std::string &raw)
         if (b.block_delete && block_delete_) return INTERP_OK;
         return execute_block(b);
     } catch (const InterpError &e) {
-        interp_error_unwinding = false;
         error_ = e.what();
-        error_line_ = raw;
+        auto at = dynamic_cast<const InterpErrorAt *>(&e);
+        error_line_ = at ? at->line() : raw;
         unwind_after_error();
         return INTERP_ERROR;
     }
@@ -303,11 +306,16 @@ bool Interp::load_ini(const std::string &path)
     st.oword_warnonly = flag("OWORD_WARNONLY", "RS274NGC", false);
     st.disable_fanuc_style_sub = flag("DISABLE_FANUC_STYLE_SUB", "RS274NGC", false);
     st.ini_vars = flag("INI_VARS", "RS274NGC", true);
+    st.loop_limit = (long)real("MAX_LOOP_ITERATIONS", "RS274NGC", (double)st.loop_limit);
+    st.total_loop_limit =
+        (long)real("MAX_TOTAL_LOOP_ITERATIONS", "RS274NGC", (double)st.total_loop_limit);
     st.hal_pin_vars = flag("HAL_PIN_VARS", "RS274NGC", true);
     st.tool_change_quill_up = flag("TOOL_CHANGE_QUILL_UP", "EMCIO", false);
     st.tool_change_at_g30 = flag("TOOL_CHANGE_AT_G30", "EMCIO", false);
     st.tool_change_with_spindle_on = flag("TOOL_CHANGE_WITH_SPINDLE_ON", "EMCIO", false);
     st.random_toolchanger = flag("RANDOM_TOOLCHANGER", "EMCIO", false);
+    auto spindles = ini.FindInt("SPINDLES", "TRAJ");
+    if (spindles && *spindles >= 1 && *spindles <= SPINDLE_COUNT) s_.num_spindles = *spindles;
     auto units = ini.Find("LINEAR_UNITS", "TRAJ");
     st.metric_machine = !units ? -1 : *units == "inch" ? 0 : 1;
     if (auto v = ini.Find("PROGRAM_PREFIX", "DISPLAY")) st.program_prefix = IniFile::TildeExpand(*v);

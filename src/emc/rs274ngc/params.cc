@@ -1,4 +1,4 @@
-// params.cc: numbered and named parameters: reading, scoping and write protection (gcode.md §6).
+// params.cc: numbered and named parameters: reading, scoping and write protection (LinuxCNC's parameter rules).
 #include <cmath>
 
 #include "interp.hh"

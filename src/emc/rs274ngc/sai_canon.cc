@@ -1,4 +1,4 @@
-// sai_canon.cc: printed canon calls of the standalone interpreter, in canon.md §3's exact formats.
+// sai_canon.cc: printed canon calls of the standalone interpreter, in LinuxCNC rs274's exact formats.
 #include "sai_canon.hh"
 
 #include <cmath>

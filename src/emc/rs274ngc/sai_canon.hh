@@ -1,4 +1,4 @@
-// sai_canon.hh: the standalone interpreter's Canon: prints every call as canon.md §3 describes.
+// sai_canon.hh: the standalone interpreter's Canon: prints every call as LinuxCNC's rs274 does.
 #ifndef OPENEMC_RS274NGC_SAI_CANON_HH
 #define OPENEMC_RS274NGC_SAI_CANON_HH
 

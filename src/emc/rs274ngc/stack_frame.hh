@@ -2,6 +2,7 @@
 #ifndef OPENEMC_RS274NGC_STACK_FRAME_HH
 #define OPENEMC_RS274NGC_STACK_FRAME_HH
 
+#include <exception>
 #include <string>
 #include <vector>
 
@@ -10,17 +11,18 @@
 // Most frames one error records.
 constexpr size_t STACK_FRAME_MAX = 64;
 
-// Appends its function's signature to `stack` when an InterpError unwinds it (innermost first).
-// Only a global flag is read on the normal path, so it costs next to nothing per call.
+// Appends its function's signature to `stack` when an exception unwinds it (innermost first).
+// std::uncaught_exceptions() rising between construction and destruction means unwinding, so
+// there is no process-wide state and the normal path costs one counter read.
 class StackFrame {
 public:
-    // remember where to record
+    // remember where to record and how many exceptions were in flight
     StackFrame(std::vector<std::string> &stack, const char *signature)
-        : stack_(stack), signature_(signature) {}
-    // record the signature when an InterpError is unwinding through this frame
+        : stack_(stack), signature_(signature), in_flight_(std::uncaught_exceptions()) {}
+    // record the signature when an exception is unwinding through this frame
     ~StackFrame()
     {
-        if (interp_error_unwinding && stack_.size() < STACK_FRAME_MAX)
+        if (std::uncaught_exceptions() > in_flight_ && stack_.size() < STACK_FRAME_MAX)
             stack_.emplace_back(signature_);
     }
     StackFrame(const StackFrame &) = delete;
@@ -29,6 +31,7 @@ public:
 private:
     std::vector<std::string> &stack_;
     const char *signature_;
+    int in_flight_;
 };
 
 // Declares the frame of the enclosing Interp member function.
