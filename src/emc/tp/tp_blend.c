@@ -231,3 +231,16 @@ void tp_blend_deviation(const tp_geo_t *blend, const tp_corner_t *c, const tp_bl
     }
     *path_dev = dev + sag;
 }
+
+/* The larger of the vertex miss and the path deviation.  A line-line blend without end curvature
+ * stays inside the corner, so its vertex miss is the deviation. */
+double tp_blend_worst(const tp_geo_t *blend, const tp_corner_t *c, const tp_blend_spec_t *spec)
+{
+    if (c->ga->kind == TP_GEO_LINE && c->gb->kind == TP_GEO_LINE && !spec->ka_set && !spec->kb_set) {
+        tp_vec_t corner = c->ga->u.line.end;
+        return quintic_miss(&blend->u.q, &corner);
+    }
+    double miss, dev;
+    tp_blend_deviation(blend, c, spec, &miss, &dev);
+    return fmax(miss, dev);
+}

@@ -110,10 +110,10 @@ static void report(tp_planner_t *tp, tp_cycle_out_t *out, double fs, double rs)
     out->spindle_sync_waiting = tp->ex.waiting;
     if (!s)
         return;
-    tp_vec_t end = s->geo.kind == TP_GEO_ARC ? s->geo.u.arc.end : s->geo.u.line.end;
+    tp_vec_t end = tp_vec_from_pose(&s->in.end);
     tp_vec_t dtg = tp_vec_sub(&end, &tp->pos);
     out->dtg = tp_vec_to_pose(&dtg);
-    out->distance_to_go = fmax(0.0, s->s_end - tp->ex.s) + (s->finalized ? s->cut_out : 0.0);
+    out->distance_to_go = fmax(0.0, s->s_end - tp->ex.s);
     out->requested_vel = fmin(s->in.vel, s->in.ini_maxvel > 0.0 ? s->in.ini_maxvel : s->in.vel);
     out->net_feed_scale = s->in.motion_type == TP_MOTION_TRAVERSE ? rs : fs;
     out->motion_type = s->in.motion_type;

@@ -192,7 +192,7 @@ static int substep(tp_planner_t *tp, const tp_window_t *w, int *ti, int *ri, dou
 #endif
     }
     int reached;
-    double vt = t->v;
+    double vt = fmin(t->v, st->v);    /* braking never speeds up past the stretch's cap */
     if (tp->ex.a > 0.0 && t->lim.jerk > 0.0) {
         double v_rest = tp->ex.v + tp->ex.a * tp->ex.a / (2.0 * t->lim.jerk);
         vt = fmin(vt, v_rest);          /* settle the acceleration, never speed up while braking */

@@ -200,15 +200,18 @@ tp_jet_t tp_geo_jet(const tp_geo_t *g, double s)
         s = g->len;
     switch (g->kind) {
     case TP_GEO_ARC:
-        return arc_jet(g, s);
+        j = arc_jet(g, s);
+        break;
     case TP_GEO_QUINTIC:
-        return quintic_jet(g, s);
+        j = quintic_jet(g, s);
+        break;
     default:
-        j.p = tp_geo_eval(g, s);
         j.d1 = g->u.line.dir;
         memset(&j.d2, 0, sizeof(j.d2));
-        return j;
+        break;
     }
+    j.p = tp_geo_eval(g, s);            /* exact end points at both ends */
+    return j;
 }
 
 /* Position at s; the exact end point at (or past) the end. */

@@ -34,13 +34,18 @@ typedef enum tp_sync {
 typedef struct tp_seg {
     tp_segment_t in;            /* as added */
     uint64_t serial;
-    tp_geo_t geo;               /* the move */
+    uint64_t unit, unit_last;   /* head (first move) of its unit; in the head: the unit's last move */
+    double own0, own1;          /* the stretch of the unit's geometry this move owns */
+    double unit_dev;            /* head: how far the unit's line strays from its moves' end points */
+    tp_geo_t geo;               /* the move (in a unit's head: the unit's line) */
     tp_geo_t blend;             /* blend into the next move (jct_out == BLEND, once built) */
     tp_axlim_t lim;             /* axis and path limits along this move */
     tp_jct_t jct_in, jct_out;
     tp_term_cond_t term;        /* term condition in force when it was added */
     double tol;                 /* G64 P tolerance in force when it was added */
+    double want_in, want_out;   /* cut the blends at its ends would like */
     double cut_in, cut_out;     /* length taken from its start / end by blends */
+    int tiled;                  /* the two blends meet: nothing straight in between */
     int k_in_set, k_out_set;    /* curvature given at the cut points (tiling) */
     tp_vec_t k_in, k_out;
     int finalized;              /* its elements are emitted */
@@ -168,12 +173,12 @@ struct tp_planner {
     /* queue end */
     tp_vec_t goal;
     double s_emit;              /* global position where the next element starts */
-    struct {                    /* the last move's body, emitted before its end is known */
+    struct {                    /* state before the provisional part (emitted before its end is known) */
         int valid;
-        uint64_t elem;          /* its element */
-        int new_region;         /* it opened its own region */
-        int reg_open_before;    /* whether the region before it was still open */
-        uint32_t stop_flag;     /* TP_REG_STOP it carried */
+        uint64_t elem_head, reg_head;
+        tp_region_t last_reg;
+        int reg_open, stop_next;
+        double s_emit;
     } prov;
     /* execution */
     tp_exec_t ex;
@@ -223,10 +228,21 @@ int tp_queue_live(const tp_planner_t *tp);
 /* tp_emit.c */
 void tp_emit_piece(tp_planner_t *tp, tp_seg_t *owner, tp_seg_t *geo_seg, int is_blend, double u0,
                    double u1, uint32_t flags);
-void tp_emit_blend(tp_planner_t *tp, tp_seg_t *a, tp_seg_t *b, uint32_t flags);
+void tp_emit_blend(tp_planner_t *tp, tp_seg_t *a, tp_seg_t *a_owner, tp_seg_t *b, tp_seg_t *b_owner);
 int tp_emit_space(const tp_planner_t *tp);
-void tp_emit_provisional(tp_planner_t *tp, tp_seg_t *s);
-int tp_emit_truncate(tp_planner_t *tp, double cut);
+void tp_emit_mark(tp_planner_t *tp);
+void tp_emit_rollback(tp_planner_t *tp);
+/* tp_unit.c */
+tp_seg_t *tp_unit_head(tp_planner_t *tp, const tp_seg_t *s);
+tp_seg_t *tp_unit_last(tp_planner_t *tp, const tp_seg_t *h);
+int tp_unit_can_absorb(tp_planner_t *tp, tp_seg_t *h, const tp_seg_t *s);
+void tp_unit_absorb(tp_planner_t *tp, tp_seg_t *h, tp_seg_t *s);
+void tp_unit_emit(tp_planner_t *tp, tp_seg_t *h, double u0, double u1, uint32_t flags);
+/* tp_junction.c */
+void tp_jct_plan(tp_planner_t *tp, tp_seg_t *b, tp_seg_t *c);
+void tp_jct_commit(tp_planner_t *tp, tp_seg_t *a, tp_seg_t *b, tp_seg_t *c);
+void tp_jct_provisional(tp_planner_t *tp, tp_seg_t *b, tp_seg_t *c);
+int tp_jct_can_stop_before(const tp_planner_t *tp, double s_at);
 /* tp_window.c */
 double tp_region_cap(const tp_planner_t *tp, const tp_region_t *r, double feed_scale,
                      double rapid_scale, double spindle_rps);

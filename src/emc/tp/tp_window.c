@@ -32,21 +32,18 @@ static tp_lim1_t lim_min(tp_lim1_t a, double acc, double jerk)
     return r;
 }
 
-/* Speed on the braking curve into (v, lim) at distance d, covering any acceleration there. */
+/* Largest speed any state (any acceleration) can have at distance d before a target of speed v and
+ * still meet it: decelerating at the full acceleration already, the target may be met with the
+ * acceleration still negative, so no final jerk ramp is needed. */
 static double curve_plus(double v, double d, const tp_lim1_t *lim)
 {
-    if (lim->jerk > 0.0) {
-        double tr = lim->acc / lim->jerk;
-        double d_ramp = v * tr + lim->jerk * tr * tr * tr / 6.0;
-        if (d < d_ramp)
-            d = d_ramp;
-    }
-    return tp_brake_curve(v, d, lim);
+    return sqrt(v * v + 2.0 * lim->acc * d);
 }
 
 /* A valley: the speed allowed at a region start and the limits of the stretch before it. */
 typedef struct valley {
     double s, v;
+    double cap;                 /* the region's own cap (v is INFINITY where it limits nothing) */
     tp_lim1_t lim;
     int stop;
 } valley_t;
@@ -54,9 +51,9 @@ typedef struct valley {
 /* The stretch before a valley allows clearly more than the span after it. */
 static int lim_stronger(const tp_lim1_t *before, const tp_lim1_t *span)
 {
-    if (before->acc > 1.25 * span->acc)
+    if (before->acc > 2.0 * span->acc)
         return 1;
-    return span->jerk > 0.0 && before->jerk > 1.25 * span->jerk;
+    return span->jerk > 0.0 && before->jerk > 2.0 * span->jerk;
 }
 
 /* Backward pass: keep the valleys that bind, lowered so that each can reach the next at rest
@@ -78,7 +75,7 @@ static void reduce(tp_window_t *w, const valley_t *vl, int n, tp_lim1_t first_li
         if ((bind || lim_stronger(&vl[k].lim, &span)) && m < TP_WINDOW_MAX) {
             rev[m - 1].lim = span;
             rev[m].s = vl[k].s;
-            rev[m].v = fmin(vl[k].v, tp_chain_vmax(vb, d, &span));
+            rev[m].v = fmin(fmin(vl[k].v, vl[k].cap), tp_chain_vmax(vb, d, &span));
             rev[m].stop = vl[k].stop && rev[m].v <= 0.0;
             m++;
             b = k;
@@ -141,17 +138,22 @@ void tp_window_build(tp_planner_t *tp, tp_window_t *w, double fs, double rs, dou
         reach = tp->ex.window_end - s;
     tp->ex.window_end = s + reach;
     tp_lim1_t before = lim_cur;
+    /* a region start limits nothing unless its cap is below every speed allowed before it */
+    double v_before = fmax(tp->ex.v, cap_cur);
     uint64_t k;
     for (k = tp->ex.reg + 1; k < tp->reg_head && n < TP_WINDOW_MAX; k++) {
         const tp_region_t *r = tp_reg_at(tp, k);
         double d = r->s0 - s;
         double rcap = tp_region_cap(tp, r, fs, rs, spindle_rps), cap = fmin(rcap, r->v_start);
+        double limit = cap < v_before ? cap : INFINITY;
+        v_before = fmax(v_before, rcap);
         if (d < travel)
             add_stretch(w, r->s0, rcap, r);
         if (d < travel + ramp)
             anticipate(w, r->s0, r->a);
         vl[n].s = r->s0;
-        vl[n].v = cap;
+        vl[n].v = limit;
+        vl[n].cap = cap;
         vl[n].lim = before;
         vl[n].stop = cap <= 0.0;
         n++;
@@ -163,12 +165,12 @@ void tp_window_build(tp_planner_t *tp, tp_window_t *w, double fs, double rs, dou
         /* end of the known path: a stop there */
         const tp_region_t *last = tp_reg_at(tp, tp->reg_head - 1);
         vl[n].s = last->s0 + last->len;
-        vl[n].v = 0.0;
+        vl[n].v = vl[n].cap = 0.0;
         vl[n].lim = before;
         vl[n].stop = 1;
         n++;
     } else {
-        vl[n - 1].v = 0.0;              /* beyond the reach: a pseudo stop bounds the pass */
+        vl[n - 1].v = vl[n - 1].cap = 0.0;  /* beyond the reach: a pseudo stop bounds the pass */
         vl[n - 1].stop = 0;
     }
     reduce(w, vl, n, lim_cur);
