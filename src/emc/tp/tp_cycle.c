@@ -68,7 +68,7 @@ static void track_segments(tp_planner_t *tp, const tp_cycle_in_t *in, tp_cycle_o
         tp->seg_done = owner;
     const tp_region_t *last = tp->reg_head > 0 ? tp_reg_at(tp, tp->reg_head - 1) : NULL;
     int at_end = last && tp->ex.s >= last->s0 + last->len && tp->ex.v <= 0.0;
-    int all_emitted = tp->seg_head == 0 || tp_seg_at(tp, tp->seg_head - 1)->s_end <= tp->s_emit;
+    int all_emitted = !(tp->prov.valid && tp->prov.lazy);
     if (at_end && all_emitted && tp->ex.tap == TP_TAP_NONE && !tp->ex.waiting &&
         !tp_sync_end_hold(tp, in))
         tp->seg_done = tp->seg_head;
@@ -139,6 +139,7 @@ tp_result_t tp_cycle_run(tp_planner_t *tp, const tp_cycle_in_t *in, tp_cycle_out
     memset(out, 0, sizeof(*out));
     tp_seg_t *s = current_seg(tp);
     net_scales(tp, in, s, &fs, &rs);
+    tp_jct_provisional_due(tp, 0);
     if (tp->seg_done < tp->seg_head && tp->reg_head > tp->reg_tail) {
         if (tp->ex.tap != TP_TAP_NONE) {
             tp_sync_tap_cycle(tp, in, out);

@@ -145,12 +145,27 @@ static void emit_elem(tp_planner_t *tp, tp_seg_t *owner, tp_seg_t *geo_seg, int 
 {
     if (!(u1 - u0 > 0.0) && !(flags & TP_REG_TAP))
         return;
-    if (tp->stop_next)
-        flags |= TP_REG_STOP;
-    tp->stop_next = 0;
     const tp_geo_t *g = is_blend ? &geo_seg->blend : &geo_seg->geo;
     tp_region_t r;
     piece_region(tp, g, u0, u1, lim, owner, flags, &r);
+    tp_emit_region(tp, owner, geo_seg, is_blend, u0, u1, &r);
+}
+
+/* Emit an element [u0, u1] whose caps are already in template r (its position is filled in). */
+void tp_emit_region(tp_planner_t *tp, tp_seg_t *owner, tp_seg_t *geo_seg, int is_blend, double u0,
+                    double u1, const tp_region_t *tmpl)
+{
+    tp_region_t r = *tmpl;
+    if (!(u1 - u0 > 0.0) && !(r.flags & TP_REG_TAP))
+        return;
+    if (tp->stop_next) {
+        r.flags |= TP_REG_STOP;
+        r.v_start = 0.0;
+    }
+    tp->stop_next = 0;
+    r.s0 = tp->s_emit;
+    r.len = u1 - u0;
+    r.seg = owner->serial;
     tp_elem_t *e = tp_elem_at(tp, tp->elem_head);
     e->owner = owner->serial;
     e->geo_seg = geo_seg->serial;
@@ -162,6 +177,13 @@ static void emit_elem(tp_planner_t *tp, tp_seg_t *owner, tp_seg_t *geo_seg, int 
     region_add(tp, &r);
     tp->s_emit += u1 - u0;
     owner->s_end = tp->s_emit;
+}
+
+/* Caps of part [u0, u1] of a geometry, as a region template for tp_emit_region. */
+void tp_emit_caps(tp_planner_t *tp, tp_seg_t *owner, const tp_geo_t *g, double u0, double u1,
+                  const tp_axlim_t *lim, uint32_t flags, tp_region_t *r)
+{
+    piece_region(tp, g, u0, u1, lim, owner, flags, r);
 }
 
 /* Emit part [u0, u1] of a segment's own move. */
@@ -185,6 +207,7 @@ void tp_emit_blend(tp_planner_t *tp, tp_seg_t *a, tp_seg_t *a_owner, tp_seg_t *b
 void tp_emit_mark(tp_planner_t *tp)
 {
     tp->prov.valid = 1;
+    tp->prov.lazy = 0;
     tp->prov.elem_head = tp->elem_head;
     tp->prov.reg_head = tp->reg_head;
     if (tp->reg_head > tp->reg_tail)
@@ -199,6 +222,10 @@ void tp_emit_rollback(tp_planner_t *tp)
 {
     if (!tp->prov.valid)
         return;
+    if (tp->prov.lazy) {                /* never emitted: nothing to take back */
+        tp->prov.valid = tp->prov.lazy = 0;
+        return;
+    }
     tp->elem_head = tp->prov.elem_head;
     tp->reg_head = tp->prov.reg_head;
     if (tp->reg_head > tp->reg_tail)

@@ -179,6 +179,9 @@ struct tp_planner {
         tp_region_t last_reg;
         int reg_open, stop_next;
         double s_emit;
+        uint64_t body_elem;     /* the open unit's body, one element for all its moves */
+        int lazy;               /* not emitted yet: the executor is far from the path end */
+        uint64_t lazy_b, lazy_c;/* the units it is made of (lazy_b UINT64_MAX: none) */
     } prov;
     /* execution */
     tp_exec_t ex;
@@ -230,6 +233,10 @@ void tp_emit_piece(tp_planner_t *tp, tp_seg_t *owner, tp_seg_t *geo_seg, int is_
                    double u1, uint32_t flags);
 void tp_emit_blend(tp_planner_t *tp, tp_seg_t *a, tp_seg_t *a_owner, tp_seg_t *b, tp_seg_t *b_owner);
 int tp_emit_space(const tp_planner_t *tp);
+void tp_emit_caps(tp_planner_t *tp, tp_seg_t *owner, const tp_geo_t *g, double u0, double u1,
+                  const tp_axlim_t *lim, uint32_t flags, tp_region_t *r);
+void tp_emit_region(tp_planner_t *tp, tp_seg_t *owner, tp_seg_t *geo_seg, int is_blend, double u0,
+                    double u1, const tp_region_t *tmpl);
 void tp_emit_mark(tp_planner_t *tp);
 void tp_emit_rollback(tp_planner_t *tp);
 /* tp_unit.c */
@@ -238,10 +245,12 @@ tp_seg_t *tp_unit_last(tp_planner_t *tp, const tp_seg_t *h);
 int tp_unit_can_absorb(tp_planner_t *tp, tp_seg_t *h, const tp_seg_t *s);
 void tp_unit_absorb(tp_planner_t *tp, tp_seg_t *h, tp_seg_t *s);
 void tp_unit_emit(tp_planner_t *tp, tp_seg_t *h, double u0, double u1, uint32_t flags);
+void tp_unit_split_body(tp_planner_t *tp, tp_seg_t *h, uint64_t body_elem);
 /* tp_junction.c */
 void tp_jct_plan(tp_planner_t *tp, tp_seg_t *b, tp_seg_t *c);
 void tp_jct_commit(tp_planner_t *tp, tp_seg_t *a, tp_seg_t *b, tp_seg_t *c);
 void tp_jct_provisional(tp_planner_t *tp, tp_seg_t *b, tp_seg_t *c);
+void tp_jct_provisional_due(tp_planner_t *tp, int now);
 int tp_jct_can_stop_before(const tp_planner_t *tp, double s_at);
 /* tp_window.c */
 double tp_region_cap(const tp_planner_t *tp, const tp_region_t *r, double feed_scale,

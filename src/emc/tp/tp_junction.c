@@ -146,7 +146,7 @@ static int build_blend(tp_planner_t *tp, tp_seg_t *a, tp_seg_t *b, int a_free, d
     for (int k = 0; k < TP_BLEND_TRIES; k++) {
         if (tp_blend_build(&a->blend, &c, &spec) < 0)
             return -1;
-        double worst = tol > 0.0 ? tp_blend_worst(&a->blend, &c, &spec) : 0.0;
+        double worst = tol > 0.0 ? tp_blend_worst(&a->blend, &c, &spec, tol) : 0.0;
         if (worst <= tol)
             break;
         if (k == TP_BLEND_TRIES - 1)
@@ -226,11 +226,22 @@ void tp_jct_commit(tp_planner_t *tp, tp_seg_t *a, tp_seg_t *b, tp_seg_t *c)
         tp->stop_next = 1;
 }
 
-/* Emit what the executor may use before c's successor is known: the blend b -> c (with no
- * curvature at c's side) and c's body to its end.  The next add rolls this back. */
-void tp_jct_provisional(tp_planner_t *tp, tp_seg_t *b, tp_seg_t *c)
+/* The executor is far from the end of the emitted path: the provisional tail can wait. */
+static int path_end_far(const tp_planner_t *tp)
 {
-    tp_emit_mark(tp);
+    const tp_region_t *r = tp->ex.reg < tp->reg_head ? tp_reg_at((tp_planner_t *)tp, tp->ex.reg) : NULL;
+    tp_lim1_t lim = {r ? r->a : tp->lim.amax, r ? r->j : 0.0};
+    if (!r || !(lim.acc > 0.0))
+        return 0;
+    /* the speed the executor may reach: now, or the cap of where it is */
+    double v = fmax(tp->ex.v, fmin(r->v_mach, fmin(r->v_feed, r->v_rapid) * fmax(1.0, tp->lim.max_feed_override)));
+    double reach = tp_stop_dist(v, fabs(tp->ex.a), &lim);
+    return tp->ex.s + 3.0 * reach + 20.0 * v * tp->lim.cycle_time + 1e-6 < tp->s_emit;
+}
+
+/* Emit the provisional tail: the blend b -> c (no curvature at c's side) and c's body to its end. */
+static void provisional_emit(tp_planner_t *tp, tp_seg_t *b, tp_seg_t *c)
+{
     c->cut_in = 0.0;
     c->k_in_set = 0;
     if (b && b->jct_out == TP_JCT_BLEND) {
@@ -245,6 +256,32 @@ void tp_jct_provisional(tp_planner_t *tp, tp_seg_t *b, tp_seg_t *c)
             tp->stop_next = 1;
         }
     }
+    /* one element for the whole open unit: it is emitted again (per move) when the unit closes */
+    tp->prov.body_elem = tp->elem_head;
     if (c->in.kind != TP_SEG_RIGID_TAP)
-        tp_unit_emit(tp, c, c->cut_in, c->geo.len, 0);
+        tp_emit_piece(tp, c, c, 0, c->cut_in, c->geo.len, 0);
+}
+
+/* What the executor may use before c's successor is known: the blend b -> c and c's body.  The
+ * next add rolls it back; while the executor is far from the path end it is not even emitted
+ * (tp_jct_provisional_due emits it when the executor comes near). */
+void tp_jct_provisional(tp_planner_t *tp, tp_seg_t *b, tp_seg_t *c)
+{
+    tp_emit_mark(tp);
+    tp->prov.lazy_b = b ? b->serial : UINT64_MAX;
+    tp->prov.lazy_c = c->serial;
+    tp->prov.lazy = path_end_far(tp);
+    if (!tp->prov.lazy)
+        provisional_emit(tp, b, c);
+}
+
+/* Emit a postponed provisional tail once the executor comes near the end of the path (or when
+ * the tail must stay for good). */
+void tp_jct_provisional_due(tp_planner_t *tp, int now)
+{
+    if (!tp->prov.valid || !tp->prov.lazy || (!now && path_end_far(tp)))
+        return;
+    tp->prov.lazy = 0;
+    tp_seg_t *b = tp->prov.lazy_b == UINT64_MAX ? NULL : tp_seg_at(tp, tp->prov.lazy_b);
+    provisional_emit(tp, b, tp_seg_at(tp, tp->prov.lazy_c));
 }

@@ -19,6 +19,7 @@ void tp_queue_reset(tp_planner_t *tp)
     tp->reg_open = 0;
     tp->stop_next = 1;
     tp->prov.valid = 0;
+    tp->prov.lazy = 0;
     tp->prev.valid = 0;
     tp->path_version++;
     tp->s_emit = 0.0;
@@ -216,7 +217,10 @@ tp_result_t tp_queue_add(tp_planner_t *tp, const tp_segment_t *in)
         tp_jct_commit(tp, unit_before(tp, last), last, s);
     } else {
         if (last) {
+            tp_jct_provisional_due(tp, 1);            /* the tail stays: it must exist */
             last->jct_out = s->jct_in = TP_JCT_STOP;  /* already on its way to its end */
+            if (tp->prov.valid)
+                tp_unit_split_body(tp, last, tp->prov.body_elem);
             for (uint64_t k = last->serial; k <= last->unit_last; k++)
                 tp_seg_at(tp, k)->finalized = 1;
         }

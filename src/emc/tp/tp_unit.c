@@ -94,13 +94,20 @@ void tp_unit_absorb(tp_planner_t *tp, tp_seg_t *h, tp_seg_t *s)
 /* Emit [u0, u1] of the unit's geometry, each part owned by the move it belongs to. */
 void tp_unit_emit(tp_planner_t *tp, tp_seg_t *h, double u0, double u1, uint32_t flags)
 {
+    if (h->unit_last == h->serial) {
+        tp_emit_piece(tp, h, h, 0, u0, u1, flags);
+        return;
+    }
+    /* one line: the same caps for every move's part */
+    tp_region_t tmpl;
+    tp_emit_caps(tp, h, &h->geo, u0, u1, &h->lim, flags, &tmpl);
     for (uint64_t k = h->serial; k <= h->unit_last; k++) {
         tp_seg_t *m = tp_seg_at(tp, k);
         double a = fmax(u0, m->own0), b = fmin(u1, m->own1);
         if (k == h->unit_last)
             b = u1;
-        if (b > a || (flags & TP_REG_TAP))
-            tp_emit_piece(tp, m, h, 0, a, b, flags);
+        if (b > a)
+            tp_emit_region(tp, m, h, 0, a, b, &tmpl);
     }
 }
 
@@ -108,4 +115,37 @@ void tp_unit_emit(tp_planner_t *tp, tp_seg_t *h, double u0, double u1, uint32_t 
 tp_seg_t *tp_unit_last(tp_planner_t *tp, const tp_seg_t *h)
 {
     return tp_seg_at(tp, h->unit_last);
+}
+
+/* The open unit's provisional body is one element; when it stays (the executor is already on it)
+ * give each move its own element over the same stretch, so the executing move is reported right. */
+void tp_unit_split_body(tp_planner_t *tp, tp_seg_t *h, uint64_t body_elem)
+{
+    if (h->unit_last == h->serial || body_elem + 1 != tp->elem_head)
+        return;
+    tp_elem_t body = *tp_elem_at(tp, body_elem);
+    if (body.owner != h->serial || body.is_blend)
+        return;
+    tp->elem_head = body_elem;
+    double u1 = body.u0 + body.len, s = body.s0;
+    for (uint64_t k = h->serial; k <= h->unit_last; k++) {
+        tp_seg_t *m = tp_seg_at(tp, k);
+        double a = fmax(body.u0, m->own0), b = k == h->unit_last ? u1 : fmin(u1, m->own1);
+        if (!(b > a))
+            continue;
+        tp_elem_t *e = tp_elem_at(tp, tp->elem_head);
+        e->owner = m->serial;
+        e->geo_seg = h->serial;
+        e->is_blend = 0;
+        e->u0 = a;
+        e->s0 = s;
+        e->len = b - a;
+        s += b - a;
+        m->s_end = s;
+        tp->elem_head++;
+    }
+    while (tp->ex.elem > tp->elem_tail && tp->ex.elem >= tp->elem_head)
+        tp->ex.elem--;
+    tp->ex.elem = tp->ex.elem < body_elem ? tp->ex.elem : body_elem;
+    tp_exec_locate(tp);
 }

@@ -53,25 +53,20 @@ static int programs(double jerk)
     return bad;
 }
 
-static double process_cpu(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-    return ts.tv_sec + 1e-9 * ts.tv_nsec;
-}
-
-/* Segments planned and executed per CPU second on a long program. */
+/* Segments planned per CPU second on a long program (adding them: geometry, blends, caps,
+ * regions), and the CPU of the servo cycles that execute them, on the same run. */
 static void throughput(int segments, double jerk)
 {
     tpb_machine_t mc = bench_machine(jerk);
     tpb_program_t p;
     tpb_make_long(&p, segments);
-    double t0 = process_cpu();
     long cycles;
-    tpb_run(&p, &mc, 2000, NULL, NULL, NULL, 0, &cycles);
-    double cpu = process_cpu() - t0;
-    printf("library %s: %d segments, %ld servo cycles in %.2f s CPU: %.0f segments per CPU second\n",
-           jerk > 0 ? "S-curve" : "trapezoid", segments, cycles, cpu, segments / cpu);
+    double add_cpu = 0.0, cycle_cpu = 0.0;
+    tpb_run_split(&p, &mc, 2000, NULL, NULL, NULL, 0, &cycles, &add_cpu, &cycle_cpu);
+    printf("library %s: %d segments planned in %.2f s CPU: %.0f segments per CPU second; "
+           "%ld servo cycles executing them: %.2f us each on average\n",
+           jerk > 0 ? "S-curve" : "trapezoid", segments, add_cpu, segments / add_cpu, cycles,
+           1e6 * cycle_cpu / cycles);
     tpb_free(&p);
 }
 
@@ -95,8 +90,9 @@ static void cycle_cpu(int segments, double jerk)
             qi++;
         }
     }
-    printf("planner CPU per servo cycle (%s, %d segments, %ld cycles): median %.1f us, p99.99 %.1f us, max %.1f us\n",
-           jerk > 0 ? "S-curve" : "trapezoid", segments, cycles, out[0], out[1], mx);
+    printf("planner CPU per servo cycle (%s, %d segments, %ld cycles, up to %d adds per cycle): "
+           "median %.1f us, p99.99 %.1f us, max %.1f us\n",
+           jerk > 0 ? "S-curve" : "trapezoid", segments, cycles, TPB_ADDS_PER_CYCLE, out[0], out[1], mx);
     free(hist);
     tpb_free(&p);
 }

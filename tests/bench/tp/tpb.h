@@ -4,6 +4,9 @@
 
 #include "tp_planner.h"
 
+/* Moves motion hands the planner per servo cycle at most (the rest wait in its command ring). */
+#define TPB_ADDS_PER_CYCLE 8
+
 /* One programmed move in mm (what the interpreter and canon would produce). */
 typedef struct tpb_move {
     int arc;                    /* 0 line, 1 arc */
@@ -58,6 +61,9 @@ void tpb_measure(const tpb_program_t *p, const tpb_machine_t *mc, const tpb_trac
 /* tpb_run.c */
 int tpb_run(const tpb_program_t *p, const tpb_machine_t *mc, int queue, tpb_trace_t *tr,
             double *cpu_max, double *cpu_hist, int hist_bins, long *cycles_out);
+int tpb_run_split(const tpb_program_t *p, const tpb_machine_t *mc, int queue, tpb_trace_t *tr,
+                  double *cpu_max, double *cpu_hist, int hist_bins, long *cycles_out, double *add_cpu,
+                  double *cycle_cpu);
 void tpb_segment(const tpb_program_t *p, const tpb_machine_t *mc, int k, const double *from,
                  tp_segment_t *s);
 

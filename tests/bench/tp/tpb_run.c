@@ -81,10 +81,11 @@ static tp_planner_t *bench_planner(const tpb_machine_t *mc, int queue)
     return tp;
 }
 
-/* Add moves from *next while the queue has room. */
-static void fill(tp_planner_t *tp, const tpb_program_t *p, const tpb_machine_t *mc, int *next, double *at)
+/* Add moves from *next while the queue has room, at most max of them (motion's per-cycle share). */
+static void fill(tp_planner_t *tp, const tpb_program_t *p, const tpb_machine_t *mc, int *next, double *at,
+                 int max)
 {
-    while (*next < p->n && !tp_planner_queue_full(tp)) {
+    for (int added = 0; added < max && *next < p->n && !tp_planner_queue_full(tp); added++) {
         const tpb_move_t *m = &p->m[*next];
         tp_segment_t s;
         tpb_segment(p, mc, *next, at, &s);
@@ -109,6 +110,14 @@ static double thread_cpu(void)
 int tpb_run(const tpb_program_t *p, const tpb_machine_t *mc, int queue, tpb_trace_t *tr,
             double *cpu_max, double *cpu_hist, int hist_bins, long *cycles_out)
 {
+    return tpb_run_split(p, mc, queue, tr, cpu_max, cpu_hist, hist_bins, cycles_out, NULL, NULL);
+}
+
+/* As tpb_run, also adding up the CPU seconds spent adding moves and running cycles. */
+int tpb_run_split(const tpb_program_t *p, const tpb_machine_t *mc, int queue, tpb_trace_t *tr,
+                  double *cpu_max, double *cpu_hist, int hist_bins, long *cycles_out, double *add_cpu,
+                  double *cycle_cpu)
+{
     tp_planner_t *tp = bench_planner(mc, queue);
     int next = 0;
     double at[3] = {p->start[0], p->start[1], p->start[2]};
@@ -117,12 +126,24 @@ int tpb_run(const tpb_program_t *p, const tpb_machine_t *mc, int queue, tpb_trac
     memset(&in, 0, sizeof(in));
     in.feed_scale = in.rapid_scale = in.adaptive_feed = 1.0;
     in.num_spindles = 1;
-    fill(tp, p, mc, &next, at);         /* held start: the queue is full before motion */
+    /* the clock itself costs time: measure it to take it out of the split */
+    double clock_cost = 0.0;
+    if (add_cpu) {
+        double c0 = thread_cpu();
+        for (int k = 0; k < 10000; k++)
+            thread_cpu();
+        clock_cost = (thread_cpu() - c0) / 10001.0;
+    }
+    double t_start = add_cpu ? thread_cpu() : 0.0;
+    fill(tp, p, mc, &next, at, 1 << 30); /* held start: the queue is full before motion */
     long cycles = 0;
     for (;;) {
         double t0 = cpu_hist ? thread_cpu() : 0.0;
-        fill(tp, p, mc, &next, at);
+        fill(tp, p, mc, &next, at, TPB_ADDS_PER_CYCLE);
+        double t1 = add_cpu ? thread_cpu() : 0.0;
         tp_planner_run_cycle(tp, &in, &out);
+        if (add_cpu)
+            *cycle_cpu += thread_cpu() - t1 - clock_cost;
         if (cpu_hist) {
             double us = (thread_cpu() - t0) * 1e6;
             int bin = (int)(us * 10.0);
@@ -145,6 +166,8 @@ int tpb_run(const tpb_program_t *p, const tpb_machine_t *mc, int queue, tpb_trac
         if (cycles > 100000000L)
             break;
     }
+    if (add_cpu)
+        *add_cpu = thread_cpu() - t_start - *cycle_cpu - 2.0 * clock_cost * cycles;
     if (cycles_out)
         *cycles_out = cycles;
     unsigned long em = tp_planner_emergencies(tp);
