@@ -99,9 +99,9 @@ static void report(tp_planner_t *tp, tp_cycle_out_t *out, double fs, double rs)
     out->current_vel = tp->ex.tap != TP_TAP_NONE ? fabs(tp->ex.tap_v) : tp->ex.v;
     out->queue_depth = tp_queue_live(tp);
     out->queue_full = out->queue_depth >= tp->queue_size;
-    out->done = out->queue_depth == 0 && tp->ex.v <= 0.0;
+    out->done = out->queue_depth == 0 && tp->ex.v <= 0.0 && tp->ex.dir > 0 && !tp->reverse_req;
     out->paused = tp->paused && tp->ex.v <= 0.0;
-    out->reverse = tp->reverse_req;
+    out->reverse = tp->ex.dir < 0;
     out->rigid_tap_state = tp->ex.tap;
     out->unlock_joint = tp->ex.unlock_joint;
     for (int k = 0; k < TP_MAX_SPINDLES; k++)
@@ -122,6 +122,37 @@ static void report(tp_planner_t *tp, tp_cycle_out_t *out, double fs, double rs)
     out->active_depth = tp_elem_at(tp, tp->ex.elem)->is_blend ? 2 : 1;
 }
 
+/* One cycle of motion in the executor's direction; a change of direction waits until at rest. */
+static void move(tp_planner_t *tp, const tp_cycle_in_t *in, const tp_seg_t *s, double fs, double rs)
+{
+    tp_window_t w;
+    int want = tp_rev_wanted(tp, in, s);
+    double sp = tp_sync_spindle_rps(tp, in);
+    if (want != tp->ex.dir && tp->ex.v <= 0.0) {
+        tp->ex.dir = want;
+        tp->ex.a = 0.0;
+        tp->ex.window_end = 0.0;
+        tp->prev.valid = 0;
+    }
+    tp_window_build(tp, &w, fs, rs, sp, tp->ex.dir);
+    if (want != tp->ex.dir) {
+        for (int k = 0; k < w.nr; k++)
+            w.r[k].v = 0.0;             /* come to rest before turning round */
+    } else if (tp->ex.dir > 0) {
+        tp_window_settle(tp, &w, fs, rs, sp);
+        tp_sync_adjust(tp, in, &w);
+    }
+    if (tp->ex.dir > 0) {
+        tp_exec_move(tp, &w, tp->lim.cycle_time);
+        tp_exec_locate(tp);
+        return;
+    }
+    tp->ex.s = -tp->ex.s;
+    tp_exec_move(tp, &w, tp->lim.cycle_time);
+    tp->ex.s = -tp->ex.s;
+    tp_rev_locate(tp);
+}
+
 /* Finish an abort once at rest: drop the queue where the machine stands. */
 static void finish_abort(tp_planner_t *tp)
 {
@@ -140,18 +171,12 @@ tp_result_t tp_cycle_run(tp_planner_t *tp, const tp_cycle_in_t *in, tp_cycle_out
     tp_seg_t *s = current_seg(tp);
     net_scales(tp, in, s, &fs, &rs);
     tp_jct_provisional_due(tp, 0);
-    if (tp->seg_done < tp->seg_head && tp->reg_head > tp->reg_tail) {
-        if (tp->ex.tap != TP_TAP_NONE) {
+    if (tp->reg_head > tp->reg_tail && (tp->seg_done < tp->seg_head || tp->ex.dir < 0 ||
+                                        tp_rev_wanted(tp, in, s) < 0)) {
+        if (tp->ex.tap != TP_TAP_NONE)
             tp_sync_tap_cycle(tp, in, out);
-        } else if (!hold_at_stop(tp, in, out)) {
-            tp_window_t w;
-            double sp = tp_sync_spindle_rps(tp, in);
-            tp_window_build(tp, &w, fs, rs, sp);
-            tp_window_settle(tp, &w, fs, rs, sp);
-            tp_sync_adjust(tp, in, &w);
-            tp_exec_move(tp, &w, tp->lim.cycle_time);
-            tp_exec_locate(tp);
-        }
+        else if (tp->ex.dir < 0 || !hold_at_stop(tp, in, out))
+            move(tp, in, s, fs, rs);
         track_segments(tp, in, out);
         if (tp->ex.tap == TP_TAP_NONE)
             tp->pos = tp_exec_position(tp);

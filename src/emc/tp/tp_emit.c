@@ -7,8 +7,8 @@
 #define TP_CAP_STEPS 64.0
 /* A region aims at 1/TP_REGION_SHARE of the braking distance at its speed. */
 #define TP_REGION_SHARE 24.0
-/* Elements a single add may need (blend halves, body, fallback pieces). */
-#define TP_EMIT_PER_ADD 8
+/* Elements a single add may need (blend halves, body, fallback pieces, a unit's moves). */
+#define TP_EMIT_PER_ADD TP_EMIT_SPACE
 
 /* Round a positive cap down to the step grid (0 and INFINITY unchanged). */
 static double quantize(double x)

@@ -88,6 +88,8 @@ typedef struct tp_target {
 } tp_target_t;
 
 #define TP_WINDOW_MAX 64
+/* Ring entries one add may need: blend halves, a body per move of a unit (64), fallback pieces. */
+#define TP_EMIT_SPACE 72
 #define TP_CROSS_MAX 16
 
 /* A region the next cycle may enter: where, its speed cap and the limits while in it. */
@@ -120,6 +122,7 @@ typedef struct tp_exec {
     double s, v, a;             /* global position, speed, acceleration along the path */
     uint64_t elem, reg;         /* current element / region */
     double window_end;          /* the lookahead never shrinks below this position */
+    int dir;                    /* +1 forward, -1 reverse run */
     uint64_t cleared_stop;      /* region + 1 whose start stop has been served */
     int waiting;                /* at a stop, waiting for spindle at-speed or index */
     int index_state;            /* 0 idle, 1 armed, 2 waiting for the index */
@@ -256,7 +259,7 @@ int tp_jct_can_stop_before(const tp_planner_t *tp, double s_at);
 double tp_region_cap(const tp_planner_t *tp, const tp_region_t *r, double feed_scale,
                      double rapid_scale, double spindle_rps);
 void tp_window_build(tp_planner_t *tp, tp_window_t *w, double feed_scale, double rapid_scale,
-                     double spindle_rps);
+                     double spindle_rps, int dir);
 void tp_window_settle(tp_planner_t *tp, tp_window_t *w, double feed_scale, double rapid_scale,
                       double spindle_rps);
 /* tp_exec.c */
@@ -266,6 +269,9 @@ void tp_exec_locate(tp_planner_t *tp);
 tp_vec_t tp_exec_position(tp_planner_t *tp);
 /* tp_cycle.c */
 tp_result_t tp_cycle_run(tp_planner_t *tp, const tp_cycle_in_t *in, tp_cycle_out_t *out);
+/* tp_reverse.c */
+int tp_rev_wanted(const tp_planner_t *tp, const tp_cycle_in_t *in, const tp_seg_t *s);
+void tp_rev_locate(tp_planner_t *tp);
 /* tp_sync.c */
 double tp_sync_spindle_rps(const tp_planner_t *tp, const tp_cycle_in_t *in);
 int tp_sync_start_wait(tp_planner_t *tp, const tp_cycle_in_t *in, tp_seg_t *s, tp_cycle_out_t *out);

@@ -31,8 +31,8 @@ tp_planner_t *tp_planner_create(int queue_size)
     if (!tp)
         return NULL;
     tp->queue_size = queue_size;
-    tp->seg_cap = (uint32_t)queue_size + 4;
-    tp->elem_cap = tp->reg_cap = TP_ELEMS_PER_SEG * tp->seg_cap + 16;
+    tp->seg_cap = 2 * (uint32_t)queue_size + 8;   /* as many again for reverse-run history */
+    tp->elem_cap = tp->reg_cap = TP_ELEMS_PER_SEG * tp->seg_cap + 4 * TP_EMIT_SPACE;
     tp->aout_cap = TP_AOUTS_PER_SEG * tp->seg_cap + TP_MAX_AIO;
     tp->segs = calloc(tp->seg_cap, sizeof(*tp->segs));
     tp->elems = calloc(tp->elem_cap, sizeof(*tp->elems));

@@ -25,16 +25,19 @@ void tp_queue_reset(tp_planner_t *tp)
     tp->s_emit = 0.0;
     tp->goal = tp->pos;
     memset(&tp->ex, 0, sizeof(tp->ex));
+    tp->ex.dir = 1;
     tp->ex.tap = TP_TAP_NONE;
     tp->ex.unlock_joint = -1;
 }
 
-/* Free ring entries the executor no longer needs. */
+/* Free ring entries behind the executor, oldest first, only as far as room is needed: what stays
+ * is the history reverse run can go back along. */
 static void reclaim(tp_planner_t *tp)
 {
-    while (tp->elem_tail < tp->ex.elem && tp->elem_tail < tp->elem_head)
+    uint32_t keep_free = 2 * TP_EMIT_SPACE;
+    while (tp->elem_tail < tp->ex.elem && tp->elem_head - tp->elem_tail + keep_free > tp->elem_cap)
         tp->elem_tail++;
-    while (tp->reg_tail < tp->ex.reg && tp->reg_tail < tp->reg_head)
+    while (tp->reg_tail < tp->ex.reg && tp->reg_head - tp->reg_tail + keep_free > tp->reg_cap)
         tp->reg_tail++;
     uint64_t keep = tp->seg_done;
     if (tp->seg_head > tp->seg_tail) {
@@ -50,8 +53,20 @@ static void reclaim(tp_planner_t *tp)
         if (g < keep)
             keep = g;
     }
-    while (tp->seg_tail < keep)
+    while (tp->seg_tail < keep && tp->seg_head - tp->seg_tail + 4 > tp->seg_cap)
         tp->seg_tail++;
+    if (tp->seg_head - tp->seg_tail + 4 > tp->seg_cap) {
+        /* the history holds the segments: give up elements and regions to free some */
+        while (tp->elem_tail < tp->ex.elem && tp_elem_at(tp, tp->elem_tail)->geo_seg < tp->seg_done)
+            tp->elem_tail++;
+        while (tp->reg_tail < tp->ex.reg && tp_reg_at(tp, tp->reg_tail)->seg < tp->seg_done)
+            tp->reg_tail++;
+        keep = tp->elem_tail < tp->elem_head ? tp_elem_at(tp, tp->elem_tail)->geo_seg : tp->seg_done;
+        if (keep > tp->seg_done)
+            keep = tp->seg_done;
+        while (tp->seg_tail < keep && tp->seg_tail + 2 < tp->seg_head)
+            tp->seg_tail++;
+    }
 }
 
 /* Per-axis and path limits of a move. */

@@ -118,12 +118,57 @@ static void anticipate(tp_window_t *w, double s0, double acc)
             w->r[k].lim.acc = fmin(w->r[k].lim.acc, acc);
 }
 
-/* Build the window from the executor state: speed targets, and the stretches of the next cycle. */
-void tp_window_build(tp_planner_t *tp, tp_window_t *w, double fs, double rs, double spindle_rps)
+/* A region the executor meets walking in direction dir: where it enters it (backwards positions
+ * are -s), whether a stop lies at that point, whether it may enter at all (reverse run cannot run
+ * synchronised or tapping moves backwards). */
+typedef struct meet {
+    const tp_region_t *r;
+    double pos;
+    int stop;
+    int blocked;
+} meet_t;
+
+/* The k-th region after the current one in direction dir; 0 past the end of the kept path. */
+static int meet_region(tp_planner_t *tp, int dir, uint64_t k, meet_t *m)
+{
+    if (dir > 0) {
+        uint64_t n = tp->ex.reg + k;
+        if (n >= tp->reg_head)
+            return 0;
+        m->r = tp_reg_at(tp, n);
+        m->pos = m->r->s0;
+        m->stop = m->r->v_start <= 0.0;
+        m->blocked = 0;
+        return 1;
+    }
+    if (tp->ex.reg < tp->reg_tail + k)
+        return 0;
+    uint64_t n = tp->ex.reg - k;
+    m->r = tp_reg_at(tp, n);
+    m->pos = -(m->r->s0 + m->r->len);
+    m->stop = (tp_reg_at(tp, n + 1)->flags & TP_REG_STOP) != 0;
+    m->blocked = (m->r->flags & (TP_REG_SYNC_POS | TP_REG_TAP)) != 0;
+    return 1;
+}
+
+/* Where the kept path ends in direction dir: after the last region met (the current one when none
+ * was met). */
+static double path_end(tp_planner_t *tp, int dir, const meet_t *last, int have_last)
+{
+    if (dir > 0) {
+        const tp_region_t *r = tp_reg_at(tp, tp->reg_head - 1);
+        return r->s0 + r->len;
+    }
+    return -(have_last ? last->r->s0 : tp_reg_at(tp, tp->ex.reg)->s0);
+}
+
+/* Build the window from the executor state for direction dir (positions -s backwards): speed
+ * targets, and the stretches of the next cycle. */
+void tp_window_build(tp_planner_t *tp, tp_window_t *w, double fs, double rs, double spindle_rps, int dir)
 {
     valley_t vl[TP_WINDOW_MAX + 1];
     int n = 0;
-    double s = tp->ex.s, T = tp->lim.cycle_time;
+    double s = dir > 0 ? tp->ex.s : -tp->ex.s, T = tp->lim.cycle_time;
     const tp_region_t *cur = tp_reg_at(tp, tp->ex.reg);
     tp_lim1_t lim_cur = reg_lim(cur);
     double cap_cur = tp_region_cap(tp, cur, fs, rs, spindle_rps);
@@ -134,24 +179,28 @@ void tp_window_build(tp_planner_t *tp, tp_window_t *w, double fs, double rs, dou
     double ramp = lim_cur.jerk > 0.0 ? v * (fabs(tp->ex.a) + lim_cur.acc) / lim_cur.jerk * 1.5 : 0.0;
     double reach = TP_WINDOW_REACH * tp_stop_dist(v, fabs(tp->ex.a), &lim_cur) + 4.0 * travel;
     /* the window only grows: a pseudo stop that moved closer could make a safe state unsafe */
-    if (tp->ex.window_end - s > reach)
+    if (dir > 0 && tp->ex.window_end - s > reach)
         reach = tp->ex.window_end - s;
-    tp->ex.window_end = s + reach;
+    if (dir > 0)
+        tp->ex.window_end = s + reach;
     tp_lim1_t before = lim_cur;
     /* a region start limits nothing unless its cap is below every speed allowed before it */
     double v_before = fmax(tp->ex.v, cap_cur);
-    uint64_t k;
-    for (k = tp->ex.reg + 1; k < tp->reg_head && n < TP_WINDOW_MAX; k++) {
-        const tp_region_t *r = tp_reg_at(tp, k);
-        double d = r->s0 - s;
-        double rcap = tp_region_cap(tp, r, fs, rs, spindle_rps), cap = fmin(rcap, r->v_start);
+    meet_t m;
+    int have = 0, more;
+    uint64_t k = 1;
+    for (; (more = meet_region(tp, dir, k, &m)) && !m.blocked && n < TP_WINDOW_MAX; k++) {
+        const tp_region_t *r = m.r;
+        have = 1;
+        double d = m.pos - s;
+        double rcap = tp_region_cap(tp, r, fs, rs, spindle_rps), cap = m.stop ? 0.0 : rcap;
         double limit = cap < v_before ? cap : INFINITY;
         v_before = fmax(v_before, rcap);
         if (d < travel)
-            add_stretch(w, r->s0, rcap, r);
+            add_stretch(w, m.pos, rcap, r);
         if (d < travel + ramp)
-            anticipate(w, r->s0, r->a);
-        vl[n].s = r->s0;
+            anticipate(w, m.pos, r->a);
+        vl[n].s = m.pos;
         vl[n].v = limit;
         vl[n].cap = cap;
         vl[n].lim = before;
@@ -161,10 +210,9 @@ void tp_window_build(tp_planner_t *tp, tp_window_t *w, double fs, double rs, dou
         if (d > reach)
             break;
     }
-    if (k >= tp->reg_head) {
-        /* end of the known path: a stop there */
-        const tp_region_t *last = tp_reg_at(tp, tp->reg_head - 1);
-        vl[n].s = last->s0 + last->len;
+    if (!more || m.blocked || n == 0) {
+        /* end of the kept path: a stop there */
+        vl[n].s = more && m.blocked ? m.pos : path_end(tp, dir, &m, have);
         vl[n].v = vl[n].cap = 0.0;
         vl[n].lim = before;
         vl[n].stop = 1;
