@@ -96,7 +96,8 @@ typedef struct tp_target {
 typedef struct tp_stretch {
     double s;
     double v;
-    tp_lim1_t lim;
+    tp_lim1_t lim;              /* anticipating the stretches soon after it */
+    double jerk_own;            /* its own jerk cap (for settling what is already under way) */
 } tp_stretch_t;
 
 /* The lookahead computed at the start of a cycle. */

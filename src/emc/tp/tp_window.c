@@ -107,16 +107,22 @@ static void add_stretch(tp_window_t *w, double s0, double cap, const tp_region_t
     w->r[w->nr].v = cap;
     w->r[w->nr].lim.acc = r->a;
     w->r[w->nr].lim.jerk = r->j;
+    w->r[w->nr].jerk_own = r->j;
     w->nr++;
 }
 
-/* Lower the acceleration of every stretch to a cap met within the anticipation distance. */
-static void anticipate(tp_window_t *w, double s0, double acc)
+/* Lower the acceleration and jerk of every stretch to caps met within the anticipation distance:
+ * an acceleration carried into a stretch of smaller jerk settles later and would overshoot. */
+static void anticipate(tp_window_t *w, double s0, double acc, double jerk)
 {
     for (int k = 0; k < w->nr; k++)
-        if (w->r[k].s <= s0)
+        if (w->r[k].s <= s0) {
             w->r[k].lim.acc = fmin(w->r[k].lim.acc, acc);
+            if (jerk > 0.0)
+                w->r[k].lim.jerk = w->r[k].lim.jerk > 0.0 ? fmin(w->r[k].lim.jerk, jerk) : jerk;
+        }
 }
+
 
 /* A region the executor meets walking in direction dir: where it enters it (backwards positions
  * are -s), whether a stop lies at that point, whether it may enter at all (reverse run cannot run
@@ -199,7 +205,7 @@ void tp_window_build(tp_planner_t *tp, tp_window_t *w, double fs, double rs, dou
         if (d < travel)
             add_stretch(w, m.pos, rcap, r);
         if (d < travel + ramp)
-            anticipate(w, m.pos, r->a);
+            anticipate(w, m.pos, r->a, r->j);
         vl[n].s = m.pos;
         vl[n].v = limit;
         vl[n].cap = cap;
