@@ -336,11 +336,15 @@ typedef struct {
     int type;       /* HAL_COMP_RT / HAL_COMP_USER / HAL_COMP_INST (hal_priv.h) */
     int ready;      /* non-zero once hal_ready was called */
     int pid;        /* user comps: owner pid, RT: 0 */
+    int owner_alive; /* user comps: 0 once the owner process is gone (killed); RT: 1 */
     char name[HAL_NAME_LEN + 1];
 } hal_comp_info_t;
 /* Look a component up by name / id; 0 or -ENOENT. */
 extern int hal_comp_by_name(const char *name, hal_comp_info_t *info);
 extern int hal_comp_by_id(int comp_id, hal_comp_info_t *info);
+/* Remove a user component whose process no longer exists (0), else -ENOENT (no such
+   component), -EINVAL (not a user component) or -EBUSY (its process still runs). */
+extern int hal_comp_remove_orphan(const char *name);
 
 /* Object counts and memory use (halcmd status mem). */
 typedef struct {

@@ -86,6 +86,8 @@ int hal_stream_create(hal_stream_t *stream, int comp_id, int key, int depth, con
         HAL_ERR("stream: depth %d must be at least 2\n", depth);
         return -EINVAL;
     }
+    if (rtapi_instance() < 0)
+        return -EINVAL;
     id = hal_stream_get_new(rtapi_instance_key(key), hal_stream_bytes(depth, n));
     if (id < 0) {
         HAL_ERR("stream: could not create shared memory for key 0x%x: %s\n", key, strerror(errno));
@@ -140,10 +142,13 @@ static int hal_stream_check(struct hal_stream_shm *f, const char *typestring)
    (callers such as halsampler report it in their own words). */
 int hal_stream_attach(hal_stream_t *stream, int comp_id, int key, const char *typestring)
 {
-    int id = shmget(rtapi_instance_key(key), 0, 0600);
+    int id;
     void *p;
     int rc;
 
+    if (rtapi_instance() < 0)
+        return -EINVAL;
+    id = shmget(rtapi_instance_key(key), 0, 0600);
     if (id < 0)
         return -ENOENT;
     p = shmat(id, NULL, 0);
