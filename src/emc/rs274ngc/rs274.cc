@@ -24,10 +24,10 @@ struct Options {
     bool block_delete = false, go = false, task = false, stack = false;
 };
 
-// print usage and exit 1
-[[noreturn]] void usage(const char *prog)
+// print usage and exit (status 1 after a usage error, 0 for --help on stdout)
+[[noreturn]] void usage(const char *prog, int status = 1)
 {
-    fprintf(stderr,
+    fprintf(status ? stderr : stdout,
             "Usage: %s [-p interp.so] [-t tool.tbl] [-v var-file.var] [-n 0|1|2]\n"
             "          [-b] [-s] [-g] [-i ini-file] [-T] [-l log_level] [input file [output file]]\n"
             "\n"
@@ -45,7 +45,7 @@ struct Options {
             "    -T: call task_init()\n"
             "    -l: specify the log_level (default: -1)\n",
             prog);
-    exit(1);
+    exit(status);
 }
 
 // directory of this executable's parent (the build tree root)
@@ -85,6 +85,7 @@ bool option(int c, Options &o, std::vector<CanonTool> &tools)
 void parse_options(int argc, char **argv, Options &o, std::vector<CanonTool> &tools)
 {
     int c;
+    if (argc > 1 && (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0)) usage(argv[0], 0);
     while ((c = getopt(argc, argv, "p:t:v:n:bsgi:Tl:")) != -1)
         if (!option(c, o, tools)) usage(argv[0]);
     int rest = argc - optind;
