@@ -43,17 +43,19 @@ static long long now_ns(void)
     return ts.tv_sec * 1000000000LL + ts.tv_nsec;
 }
 
-/* Usage on stderr, exit 2. */
+/* Usage: on stdout with exit 0 for --help, on stderr with exit 2 after a bad option. */
 static void usage(const char *why)
 {
+    FILE *out = why ? stderr : stdout;
     if (why)
         fprintf(stderr, "mesa-sim: %s\n", why);
-    fprintf(stderr, "usage: mesa-sim [--board NAME] [--ip ADDR] [--port N] [--mac XX:XX:XX:XX:XX:XX]\n"
-                    "                [--loop stepgenS:encoderE[:COUNTS_PER_STEP]]\n"
-                    "                [--motor pwmgenP:encoderE:COUNTS_PER_S] [--index encoderE:COUNTS]\n"
-                    "boards:");
-    sim_list_boards();
-    exit(2);
+    fprintf(out, "usage: mesa-sim [--board NAME] [--ip ADDR] [--port N] [--mac XX:XX:XX:XX:XX:XX]\n"
+                 "                [--loop stepgenS:encoderE[:COUNTS_PER_STEP]]\n"
+                 "                [--motor pwmgenP:encoderE:COUNTS_PER_S] [--index encoderE:COUNTS]\n"
+                 "A simulated Mesa Ethernet card answering LBP16 on ADDR (default 127.0.0.1) port N\n"
+                 "(default 27181); commands on stdin (see mesa-sim(1)).\nboards:");
+    sim_list_boards(out);
+    exit(why ? 2 : 0);
 }
 
 /* "stepgen2" -> 2 when the prefix matches and the index is below limit, else -1. */

@@ -47,11 +47,11 @@ const sim_board_t *sim_find_board(const char *name)
 }
 
 /* The names --board accepts. */
-void sim_list_boards(void)
+void sim_list_boards(FILE *out)
 {
     for (size_t i = 0; i < sizeof(boards) / sizeof(boards[0]); i++)
-        fprintf(stderr, " %.*s", (int)strcspn(boards[i].name, "-"), boards[i].name);
-    fprintf(stderr, "\n");
+        fprintf(out, " %.*s", (int)strcspn(boards[i].name, "-"), boards[i].name);
+    fprintf(out, "\n");
 }
 
 /* Little-endian word into the ROM image. */

@@ -4,6 +4,7 @@
 
 #include <stdbool.h>
 #include <stdint.h>
+#include <stdio.h>
 
 #define SIM_MAX_PORTS 3
 #define SIM_MAX_IO (SIM_MAX_PORTS * 32)
@@ -114,7 +115,7 @@ typedef struct {
 
 /* ---- boards (sim_boards.c) ---- */
 const sim_board_t *sim_find_board(const char *name);
-void sim_list_boards(void);
+void sim_list_boards(FILE *out);
 void sim_build_rom(sim_card_t *c);
 
 /* ---- time and physics (sim_physics.c) ---- */
