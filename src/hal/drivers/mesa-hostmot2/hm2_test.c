@@ -49,6 +49,7 @@ static void geometry(uint32_t ports, uint32_t width, uint32_t port_width, uint32
     set32(IDROM + 0x2C, hi);
 }
 
+/* Patterns 0-10: each adds one more correct piece, so the next IDROM check fails. */
 static void pattern_1(void) { set32(0x100, 0x55AACAFE); }
 static void pattern_2(void) { pattern_1(); memcpy(image + 0x104, "HOSTMOT2", 8); }
 static void pattern_3(void) { pattern_2(); set32(0x10C, IDROM); set32(IDROM, 0x1234); }
@@ -85,6 +86,7 @@ static void pattern_12(void)
     llio->ioport_connector_name[0] = "P3";
 }
 
+/* 13: the driver claims 5 pins per connector; 14: 37 pins, but no IO ports in the IDROM; 0: all zero. */
 static void pattern_13(void) { good_header(); geometry(0, 0, 24, 0, 0); llio->pins_per_connector = 5; }
 static void pattern_14(void) { good_header(); geometry(0, 0, 37, 0, 0); llio->pins_per_connector = 37; }
 static void pattern_0(void) { }
