@@ -3,7 +3,7 @@
 # its pin levels come back on in/in_not, and module outputs wait for the first write to drive.
 . ../lib.sh
 sim_start --board 7i92
-load_board
+load_board enable_raw
 B=$BOARD
 io_is() { [ "$(sim_field get io "$1" "$1")" = "$2" ]; }
 
@@ -44,3 +44,11 @@ halcmd setp $B.stepgen.00.step.invert_output 0
 wait_until "its alias B.stepgen.00.step.invert_output is the same param" io_is 0 0
 halcmd setp $B.led.CR01 1
 wait_until "LED CR01 is bit 31 of the LED register" sim_answer_is "led 0x80000000" get led
+
+halcmd setp $B.raw.read_address 0x100
+wait_until "raw read of the cookie (0x55AACAFE)" pin_is $B.raw.read_data 1437256446
+halcmd setp $B.raw.write_address 0x200
+halcmd setp $B.raw.write_data 0x40000000
+halcmd setp $B.raw.write_strobe 1
+wait_until "raw write reaches the card (LED register)" sim_answer_is "led 0x40000000" get led
+check "write_strobe resets itself" pin_is $B.raw.write_strobe FALSE
