@@ -71,3 +71,12 @@ check "clipping reported once" [ "$(grep -c 'maxvel is too big' "$RT_LOG")" = 1 
 halcmd setp $B.stepgen.00.steplen 1000000000
 wait_until "impossible steplen is reset to the maximum" pin_is $B.stepgen.00.steplen 163830
 check "steplen message names the stepgen" rt_log_has "hm2/hm2_7i92.0: stepgen 0 has invalid steplen, resetting to max"
+
+halcmd setp $B.stepgen.02.table-data-0 0x0a060509
+halcmd setp $B.stepgen.02.step_type 4
+wait_until "step_type 4 selects table mode" sim_answer_is "reg 0x2208 0x00000003" get reg 0x2208
+check "with table length 4 - 1" sim_answer_is "reg 0x2808 0x00000003" get reg 0x2808
+halcmd setp $B.stepgen.02.step_type 20
+wait_until "a table deeper than 16 reverts to step type 0" pin_is $B.stepgen.02.step_type 0
+check "in the card too" sim_answer_is "reg 0x2208 0x00000000" get reg 0x2208
+check "with the message" rt_log_has "the firmware only supports tables up to a depth of 16, you requested 20. Reverting to step type 0"
