@@ -10,6 +10,8 @@
 #define TP_SWITCH_ITER 50
 /* Targets checked at once: the nearest and the two after it. */
 #define TP_CHECK_TARGETS 3
+/* Later targets a carried acceleration is checked against at most. */
+#define TP_MOMENTUM_TARGETS 8
 /* Sub-steps per cycle (target crossings); a cycle never loops for ever. */
 #define TP_SUBSTEPS (2 * TP_WINDOW_MAX + 4)
 
@@ -28,26 +30,65 @@ static double settle_dist(const tp_state1_t *st, const tp_lim1_t *lim)
     return st->v * t + 0.5 * st->a * t * t - lim->jerk * t * t * t / 6.0;
 }
 
-/* A state still accelerating may carry that acceleration past a target; when a later target is
- * slower than where that momentum would end (with the smaller jerk beyond), the acceleration must
- * have settled before the target in front of it: the backward pass assumed arrival at rest
- * acceleration.  1 when every such settling fits. */
+/* Settling a positive acceleration right away, with the smallest jerk of the stretches it
+ * crosses: where it ends (*x, a position) and the speed it ends at; the first target at or after
+ * *x in *m.  -1 when a target crossed on the way is slower than that speed (loose: accepting the
+ * current state tolerates rounding). */
+static double settle_now(const tp_window_t *w, int k, double s, const tp_state1_t *st, double loose,
+                         double *x, int *m)
+{
+    tp_lim1_t lim = w->t[k].lim;
+    double v_end = st->v, end = s;
+    int n = k;
+    for (int it = 0; it < TP_MOMENTUM_TARGETS; it++) {
+        v_end = st->v + st->a * st->a / (2.0 * lim.jerk);
+        end = s + settle_dist(st, &lim);
+        n = k;
+        int grew = 0;
+        while (n < w->n && w->t[n].s < end) {
+            if (v_end > w->t[n].v * (1.0 + 1e-10 + loose * 1e-8) + 1e-12)
+                return -1.0;
+            n++;
+            if (n < w->n && w->t[n].lim.jerk > 0.0 && w->t[n].lim.jerk < lim.jerk) {
+                lim.jerk = w->t[n].lim.jerk;
+                grew = 1;
+            }
+        }
+        if (!grew)
+            break;
+    }
+    *x = end;
+    *m = n;
+    return v_end;
+}
+
+/* A state still accelerating towards a faster target k may reach it before the acceleration has
+ * settled and carry it on; the backward pass only promised the later targets from target k at rest
+ * acceleration.  Fine when braking is needed anyway (the brake ends at rest acceleration on target
+ * k), when the acceleration settles before target k, or when, settled right away, the state is
+ * within the backward pass's speed curve of the target after the settling. */
 static int momentum_ok(const tp_window_t *w, int k, double s, const tp_state1_t *st, double loose)
 {
-    if (st->a <= 0.0 || w->t[k].lim.jerk <= 0.0)
+    const tp_target_t *tk = &w->t[k];
+    if (st->a <= 0.0 || tk->lim.jerk <= 0.0)
         return 1;
-    double j = w->t[k].lim.jerk;
-    for (int m = k; m + 1 < w->n && m < k + TP_CHECK_TARGETS; m++) {
-        const tp_target_t *n = &w->t[m + 1];
-        if (n->lim.jerk > 0.0)
-            j = fmin(j, n->lim.jerk);
-        double v_over = st->v + st->a * st->a / (2.0 * j);
-        if (v_over <= n->v * (1.0 + 1e-10 + loose * 1e-8) + 1e-12)
-            continue;
-        /* settle in the stretch before target k, where the acceleration is now */
-        return settle_dist(st, &w->t[k].lim) <= w->t[k].s - s + loose * slack(w->t[k].s);
-    }
-    return 1;
+    if (st->v + st->a * st->a / (2.0 * tk->lim.jerk) > tk->v)
+        return 1;
+    if (settle_dist(st, &tk->lim) <= tk->s - s + loose * slack(tk->s))
+        return 1;
+    double x;
+    int m;
+    double v_end = settle_now(w, k, s, st, loose, &x, &m);
+#ifdef TP_DEBUG
+    if (getenv("TP_TRACE"))
+        fprintf(stderr, "    settle_now k=%d v_end=%.9g x=%.9g m=%d\n", k, v_end, x, m);
+#endif
+    if (v_end < 0.0)
+        return 0;
+    if (m >= w->n)
+        return 1;
+    const tp_target_t *tm = &w->t[m];
+    return v_end <= tp_chain_vmax(tm->v, tm->s - x, &tm->lim) * (1.0 + loose * 1e-9);
 }
 
 /* Can the state st (st.s into the sub-step from s_now) still meet the targets?  The nearest target

@@ -23,33 +23,50 @@ static tpb_machine_t bench_machine(double jerk)
     return mc;
 }
 
-/* One table row per generated program, and the geometric mean of time over bound. */
-static int programs(double jerk)
+/* Run one program (G64 Q chains merged first, as canon does) and print its table row; adds log(time/bound) to *logsum.  Non-zero when a
+ * limit, the tolerance or a safe continuation was broken. */
+static int program_row(const tpb_program_t *p, const tpb_machine_t *mc, double *logsum)
+{
+    tpb_trace_t tr = {0, 0, NULL, NULL};
+    tpb_result_t r;
+    tpb_program_t merged;               /* what canon sends: G64 Q chains merged into lines */
+    tpb_naive_merge(p, &merged);
+    int em = tpb_run(&merged, mc, 2000, &tr, NULL, NULL, 0, NULL);
+    tpb_free(&merged);
+    tpb_measure(p, mc, &tr, &r);
+    double tb = r.cycles * mc->period / r.pass_bound;
+    const char *name = strrchr(p->name, '/') ? strrchr(p->name, '/') + 1 : p->name;
+    printf("%-20.20s %8ld %7.1f %6.2f %7.3f %7.3f %7.3f %3ld/%ld/%ld %9.5f %9.5f %3ld/%ld%s\n", name, r.cycles,
+           100.0 * r.feed_bound / (r.cycles * mc->period), tb, r.vel_ratio, r.acc_ratio, r.jerk_ratio,
+           r.vel_viol, r.acc_viol, r.jerk_viol, r.max_dev, r.max_miss, r.dev_viol, r.miss_viol,
+           em ? " (emergency brakes)" : "");
+    *logsum += log(tb);
+    free(tr.p);
+    return r.vel_viol + r.acc_viol + r.jerk_viol + r.dev_viol + r.miss_viol + em != 0;
+}
+
+/* One table row per program (the generated ones, or canonical-call files), and the geometric
+ * mean of time over bound. */
+static int programs(double jerk, char **files, int nfiles)
 {
     tpb_machine_t mc = bench_machine(jerk);
     double logsum = 0.0;
     int n = 0, bad = 0;
     printf("%-20s %8s %7s %6s %7s %7s %7s %9s %9s %9s %6s\n", "program", "cycles", "feed%", "t/bnd",
            "v/lim", "a/lim", "j/lim", "viol v/a/j", "dev mm", "miss mm", "over");
-    for (int k = 0; tpb_names[k]; k++) {
+    for (int k = 0; nfiles ? k < nfiles : tpb_names[k] != NULL; k++) {
         tpb_program_t p;
-        tpb_trace_t tr = {0, 0, NULL, NULL};
-        tpb_result_t r;
-        tpb_make(&p, tpb_names[k]);
-        int em = tpb_run(&p, &mc, 2000, &tr, NULL, NULL, 0, NULL);
-        tpb_measure(&p, &mc, &tr, &r);
-        double tb = r.cycles * mc.period / r.pass_bound;
-        printf("%-20s %8ld %7.1f %6.2f %7.3f %7.3f %7.3f %3ld/%ld/%ld %9.5f %9.5f %3ld/%ld%s\n", p.name, r.cycles,
-               100.0 * r.feed_bound / (r.cycles * mc.period), tb, r.vel_ratio, r.acc_ratio, r.jerk_ratio,
-               r.vel_viol, r.acc_viol, r.jerk_viol, r.max_dev, r.max_miss, r.dev_viol, r.miss_viol,
-               em ? " (emergency brakes)" : "");
-        logsum += log(tb);
+        if (nfiles ? tpb_load_canon(&p, files[k]) : tpb_make(&p, tpb_names[k])) {
+            fprintf(stderr, "tp_bench: %s: no moves read\n", nfiles ? files[k] : tpb_names[k]);
+            bad++;
+            continue;
+        }
+        bad += program_row(&p, &mc, &logsum);
         n++;
-        bad += r.vel_viol + r.acc_viol + r.jerk_viol + r.dev_viol + r.miss_viol + em != 0;
         tpb_free(&p);
-        free(tr.p);
     }
-    printf("geometric mean time/bound: %.3f\n", exp(logsum / n));
+    if (n)
+        printf("geometric mean time/bound: %.3f\n", exp(logsum / n));
     return bad;
 }
 
@@ -101,11 +118,18 @@ int main(int argc, char **argv)
 {
     double jerk = 0.0;
     const char *what = argc > 1 ? argv[1] : "all";
-    for (int k = 2; k + 1 < argc; k++)
-        if (!strcmp(argv[k], "--jerk"))
-            jerk = atof(argv[k + 1]);
+    char *files[64];
+    int nfiles = 0;
+    for (int k = 2; k < argc; k++) {
+        if (!strcmp(argv[k], "--jerk") && k + 1 < argc)
+            jerk = atof(argv[++k]);
+        else if (nfiles < 64)
+            files[nfiles++] = argv[k];
+    }
     if (!strcmp(what, "programs"))
-        return programs(jerk) ? 1 : 0;
+        return programs(jerk, NULL, 0) ? 1 : 0;
+    if (!strcmp(what, "canon") && nfiles > 0)
+        return programs(jerk, files, nfiles) ? 1 : 0;
     if (!strcmp(what, "throughput")) {
         throughput(150000, jerk);
         return 0;
@@ -114,6 +138,7 @@ int main(int argc, char **argv)
         cycle_cpu(150000, jerk);
         return 0;
     }
-    fprintf(stderr, "usage: tp_bench programs|throughput|cycle-cpu [--jerk J]\n");
+    fprintf(stderr, "usage: tp_bench programs|throughput|cycle-cpu [--jerk J]\n"
+                    "       tp_bench canon FILE... [--jerk J]   (files of rs274 -g output)\n");
     return 2;
 }

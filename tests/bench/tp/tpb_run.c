@@ -46,12 +46,17 @@ void tpb_segment(const tpb_program_t *p, const tpb_machine_t *mc, int k, const d
         s->normal.x = m->normal[0];
         s->normal.y = m->normal[1];
         s->normal.z = m->normal[2];
+        s->turn = m->turn;
     } else {
         double u[3] = {0, 0, 0};
         for (int i = 0; i < 3 && len > 0.0; i++)
             u[i] = d[i] / len;
         s->ini_maxvel = along(u, mc->vel, mc->vtraj);
         s->acc = along(u, mc->acc, 1e9);
+    }
+    if (m->feed >= 1e8) {       /* a rapid: the machine velocity along the move */
+        s->motion_type = TP_MOTION_TRAVERSE;
+        s->vel = s->ini_maxvel;
     }
     s->jerk = mc->jerk;
     s->enables = TP_ENABLE_FS | TP_ENABLE_FH;

@@ -127,7 +127,7 @@ static void corner_modes(void)
         for (int k = 0; k < 20000; k++) {
             tp_planner_run_cycle(tp, &in, &out);
             double dx = out.pos.tran.x - 2.0, dy = out.pos.tran.y;
-            if (fabs(dx) < 0.05 && fabs(dy) < 0.05)
+            if (fabs(dx) < 0.6 && fabs(dy) < 0.6)
                 v_corner = fmin(v_corner, speed(&prev, &out));
             dev = fmax(dev, fmin(fabs(dy) + (out.pos.tran.x > 2.0 ? 1e9 : 0.0), fabs(dx)));
             prev = out;
