@@ -202,12 +202,21 @@ void tp_emit_piece(tp_planner_t *tp, tp_seg_t *owner, tp_seg_t *geo_seg, int is_
 void tp_emit_blend(tp_planner_t *tp, tp_seg_t *a, tp_seg_t *a_owner, tp_seg_t *b, tp_seg_t *b_owner)
 {
     tp_axlim_t lim;
-    double len = a->blend.len;
+    tp_region_t r[TP_BLEND_PIECES];
+    double len = a->blend.len, u[TP_BLEND_PIECES + 1], j = INFINITY;
     lim_min(&lim, &a->lim, &b->lim);
+    for (int k = 0; k <= TP_BLEND_PIECES; k++)
+        u[k] = k == TP_BLEND_PIECES ? len : len * k / TP_BLEND_PIECES;
     for (int k = 0; k < TP_BLEND_PIECES; k++) {
-        double u0 = len * k / TP_BLEND_PIECES;
-        double u1 = k + 1 == TP_BLEND_PIECES ? len : len * (k + 1) / TP_BLEND_PIECES;
-        emit_elem(tp, 2 * k < TP_BLEND_PIECES ? a_owner : b_owner, a, 1, u0, u1, &lim, 0);
+        piece_region(tp, &a->blend, u[k], u[k + 1], &lim, 2 * k < TP_BLEND_PIECES ? a_owner : b_owner,
+                     0, &r[k]);
+        j = fmin(j, r[k].j);
+    }
+    /* one jerk for the whole blend: pieces of alternating jerk would let an acceleration started
+     * under the larger one run into the smaller one unsettled */
+    for (int k = 0; k < TP_BLEND_PIECES; k++) {
+        r[k].j = j;
+        tp_emit_region(tp, 2 * k < TP_BLEND_PIECES ? a_owner : b_owner, a, 1, u[k], u[k + 1], &r[k]);
     }
 }
 

@@ -81,7 +81,7 @@ static int momentum_ok(const tp_window_t *w, int k, double s, const tp_state1_t 
     double v_end = settle_now(w, k, s, st, loose, &x, &m);
 #ifdef TP_DEBUG
     if (getenv("TP_TRACE"))
-        fprintf(stderr, "    settle_now k=%d v_end=%.9g x=%.9g m=%d\n", k, v_end, x, m);
+        fprintf(stderr, "    settle_now k=%d s=%.9g v=%.9g a=%.6g v_end=%.9g x=%.9g m=%d\n", k, s, st->v, st->a, v_end, x, m);
 #endif
     if (v_end < 0.0)
         return 0;
@@ -98,19 +98,24 @@ static int momentum_ok(const tp_window_t *w, int k, double s, const tp_state1_t 
 static int safe_at(const tp_window_t *w, int ti, double s_now, const tp_state1_t *st, double loose)
 {
     double s = s_now + st->s;
+    tp_state1_t cur = *st;
     for (int k = ti; k < w->n && k < ti + TP_CHECK_TARGETS; k++) {
         const tp_target_t *t = &w->t[k];
         double rem = t->s - s, sl = slack(t->s);
         if (rem < -sl)
             return 0;
         /* accepting the current state tolerates rounding of the speed the profile rides at */
-        double need = tp_brake_dist(st->v, st->a, t->v * (1.0 + loose * 1e-9), &t->lim);
+        double need = tp_brake_dist(cur.v, cur.a, t->v * (1.0 + loose * 1e-9), &t->lim);
         if (rem <= 1e-6 + 1e-9 * fabs(t->s)) {
             if (need > rem + sl)
                 return 0;
-            continue;                   /* on this target: the next one counts from here */
+            /* on this target: the next one counts from it, at no more than its speed (what is
+             * left before it is braked with its own limits) */
+            s = fmax(s, t->s);
+            cur.v = fmin(cur.v, t->v);
+            continue;
         }
-        return need <= rem + loose * sl && momentum_ok(w, k, s, st, loose);
+        return need <= rem + loose * sl && momentum_ok(w, k, s, &cur, loose);
     }
     return 1;
 }
@@ -188,7 +193,10 @@ static void go_profile(tp_prof_t *go, double v, double a, const tp_stretch_t *st
         tp_lim1_t own = {st->lim.acc, st->jerk_own};
         tp_prof_t settle;
         tp_prof_velocity(&settle, v, a, st->v, &own);
-        /* only when it settles (brings the acceleration towards zero first), not to push harder */
+        /* only to settle (bring the acceleration towards zero first), never to push harder: when
+         * the own profile would push first, just settle with the own jerk and go on next cycle */
+        if (!(settle.n > 0 && settle.ph[0].j * a < 0.0))
+            tp_prof_velocity(&settle, v, a, v + a * fabs(a) / (2.0 * st->jerk_own), &own);
         if (settle.n > 0 && settle.ph[0].j * a < 0.0)
             *go = settle;
     }

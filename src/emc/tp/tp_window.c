@@ -204,6 +204,10 @@ void tp_window_build(tp_planner_t *tp, tp_window_t *w, double fs, double rs, dou
     double v = fmax(tp->ex.v, fmin(cap_cur, 1e9));
     double travel = (v + lim_cur.acc * T) * T * 1.5 + 1e-12;
     double ramp = lim_cur.jerk > 0.0 ? v * (fabs(tp->ex.a) + lim_cur.acc) / lim_cur.jerk * 1.5 : 0.0;
+    /* the most positive acceleration the cycle can end with, and how far settling it takes per
+     * unit of the jerk it settles with */
+    double a_pos = fmax(tp->ex.a, 0.0) + lim_cur.jerk * T;
+    double settle_j = (v + a_pos * T) * a_pos * 1.5;
     double reach = TP_WINDOW_REACH * tp_stop_dist(v, fabs(tp->ex.a), &lim_cur) + 4.0 * travel;
     /* the window only grows: a pseudo stop that moved closer could make a safe state unsafe */
     if (dir > 0 && tp->ex.window_end - s > reach)
@@ -227,7 +231,10 @@ void tp_window_build(tp_planner_t *tp, tp_window_t *w, double fs, double rs, dou
         tp_lim1_t lim_r = reg_lim(r, v_hi);
         if (d < travel)
             add_stretch(w, m.pos, rcap, r, v_hi);
-        if (d < travel + ramp)
+        /* a region of smaller jerk is anticipated from as far as settling an acceleration under way
+         * takes with its jerk */
+        double settle = lim_r.jerk > 0.0 && lim_r.jerk < lim_cur.jerk ? settle_j / lim_r.jerk : 0.0;
+        if (d < travel + fmax(ramp, settle))
             anticipate(w, m.pos, lim_r.acc, lim_r.jerk);
         vl[n].s = m.pos;
         vl[n].v = limit;
