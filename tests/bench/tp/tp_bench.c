@@ -114,6 +114,30 @@ static void cycle_cpu(int segments, double jerk)
     tpb_free(&p);
 }
 
+/* Print every servo sample of one program (generated name or canon file): x y z speed. */
+static int trace(const char *name, double jerk)
+{
+    tpb_machine_t mc = bench_machine(jerk);
+    tpb_program_t p, merged;
+    if (strchr(name, '/') || strchr(name, '.') ? tpb_load_canon(&p, name) : tpb_make(&p, name)) {
+        fprintf(stderr, "tp_bench: %s: no moves read\n", name);
+        return 1;
+    }
+    tpb_naive_merge(&p, &merged);
+    tpb_trace_t tr = {0, 0, NULL, NULL};
+    tpb_run(&merged, &mc, 2000, &tr, NULL, NULL, 0, NULL);
+    for (int k = 0; k < tr.n; k++) {
+        const double *q = tr.p[k], *prev = k ? tr.p[k - 1] : p.start;
+        double v = sqrt((q[0] - prev[0]) * (q[0] - prev[0]) + (q[1] - prev[1]) * (q[1] - prev[1]) +
+                        (q[2] - prev[2]) * (q[2] - prev[2])) / mc.period;
+        printf("%.6f %.6f %.6f %.4f\n", q[0], q[1], q[2], v);
+    }
+    free(tr.p);
+    tpb_free(&p);
+    tpb_free(&merged);
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
     double jerk = 0.0;
@@ -130,6 +154,8 @@ int main(int argc, char **argv)
         return programs(jerk, NULL, 0) ? 1 : 0;
     if (!strcmp(what, "canon") && nfiles > 0)
         return programs(jerk, files, nfiles) ? 1 : 0;
+    if (!strcmp(what, "trace") && nfiles == 1)
+        return trace(files[0], jerk);
     if (!strcmp(what, "throughput")) {
         throughput(150000, jerk);
         return 0;
@@ -139,6 +165,7 @@ int main(int argc, char **argv)
         return 0;
     }
     fprintf(stderr, "usage: tp_bench programs|throughput|cycle-cpu [--jerk J]\n"
-                    "       tp_bench canon FILE... [--jerk J]   (files of rs274 -g output)\n");
+                    "       tp_bench canon FILE... [--jerk J]   (files of rs274 -g output)\n"
+                    "       tp_bench trace NAME|FILE [--jerk J] (x y z speed per servo cycle)\n");
     return 2;
 }
