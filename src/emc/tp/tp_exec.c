@@ -1,10 +1,6 @@
 /* tp_exec.c: moving along the path for one cycle: go as fast as allowed, switch to braking at the last safe instant. */
 #include <math.h>
 #include "tp_internal.h"
-#ifdef TP_DEBUG
-#include <stdio.h>
-#include <stdlib.h>
-#endif
 
 /* Bisection steps for the switch time (2^-50 of a cycle lands stops to far below a nanometre). */
 #define TP_SWITCH_ITER 50
@@ -79,10 +75,6 @@ static int momentum_ok(const tp_window_t *w, int k, double s, const tp_state1_t 
     double x;
     int m;
     double v_end = settle_now(w, k, s, st, loose, &x, &m);
-#ifdef TP_DEBUG
-    if (getenv("TP_TRACE"))
-        fprintf(stderr, "    settle_now k=%d s=%.9g v=%.9g a=%.6g v_end=%.9g x=%.9g m=%d\n", k, s, st->v, st->a, v_end, x, m);
-#endif
     if (v_end < 0.0)
         return 0;
     if (m >= w->n)
@@ -252,19 +244,6 @@ static int substep(tp_planner_t *tp, const tp_window_t *w, int *ti, int *ri, dou
         *t_rem -= ts;
     } else {
         tp->emergencies++;
-#ifdef TP_DEBUG
-        if (getenv("TP_TRACE")) {
-            for (int k = *ti; k < w->n && k < *ti + 3; k++) {
-                const tp_target_t *q = &w->t[k];
-                fprintf(stderr, "  t%d s=%.12g v=%.9g lim %g/%g need=%.9g rem=%.9g mom=%d\n", k, q->s, q->v, q->lim.acc, q->lim.jerk,
-                        tp_brake_dist(tp->ex.v, tp->ex.a, q->v, &q->lim), q->s - tp->ex.s, momentum_ok(w, k, tp->ex.s, &s0, 1.0));
-            }
-        }
-        if (getenv("TP_TRACE"))
-            fprintf(stderr, "emerg: s=%.12g v=%.12g a=%.6g t s=%.12g v=%.12g lim=%g/%g need=%.12g rem=%.12g\n",
-                    tp->ex.s, tp->ex.v, tp->ex.a, t->s, t->v, t->lim.acc, t->lim.jerk,
-                    tp_brake_dist(tp->ex.v, tp->ex.a, t->v, &t->lim), t->s - tp->ex.s);
-#endif
     }
     int reached;
     double vt = fmin(t->v, st->v);    /* braking never speeds up past the stretch's cap */
@@ -301,17 +280,6 @@ void tp_exec_move(tp_planner_t *tp, const tp_window_t *w, double dt)
 {
     double t_rem = dt;
     int ti = first_target(w, tp->ex.s), ri = 0;
-#ifdef TP_DEBUG
-    if (getenv("TP_TRACE")) {
-        fprintf(stderr, "  win: s=%.9f v=%.6f a=%.3f nr=%d", tp->ex.s, tp->ex.v, tp->ex.a, w->nr);
-        for (int k = 0; k < w->nr && k < 3; k++)
-            fprintf(stderr, " (%.6f v%.4f %g/%g)", w->r[k].s, w->r[k].v, w->r[k].lim.acc, w->r[k].lim.jerk);
-        fprintf(stderr, " n=%d", w->n);
-        for (int k = 0; k < w->n && k < 4; k++)
-            fprintf(stderr, " [%.6f v%.4f %g/%g%s]", w->t[k].s, w->t[k].v, w->t[k].lim.acc, w->t[k].lim.jerk, w->t[k].stop ? " S" : "");
-        fprintf(stderr, "\n");
-    }
-#endif
     for (int step = 0; step < TP_SUBSTEPS && t_rem > 0.0 && ti < w->n; step++)
         if (substep(tp, w, &ti, &ri, &t_rem))
             break;
