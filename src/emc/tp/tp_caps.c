@@ -4,7 +4,7 @@
 
 /* Derivative bounds below this count as zero. */
 #define TP_CAPS_TINY 1e-12
-#define TP_CAPS_ITER 26
+#define TP_CAPS_ITER 12
 /* Weight of the speed-change time in the choice of the reserve. */
 #define TP_CAPS_CHANGE_SHARE 0.1
 
@@ -143,6 +143,8 @@ void tp_caps_compute(const tp_bounds_t *b, const tp_axlim_t *l, double v_need, i
 {
     static const double reserve[] = {TP_CAPS_RESERVE, TP_CAPS_RESERVE / 4.0, TP_CAPS_RESERVE / 16.0};
     caps_with_reserve(b, l, v_need, with_jerk, reserve[0], out);
+    if (out->v >= fmin(ratio_min(l->vel, b->d1), v_need))
+        return;                         /* not held back by the curvature: nothing to gain */
     double best = caps_cost(out, len);
     for (int k = 1; k < (int)(sizeof(reserve) / sizeof(reserve[0])); k++) {
         tp_caps_t c;

@@ -2,8 +2,8 @@
 #include <math.h>
 #include "tp_internal.h"
 
-/* Bisection steps for the switch time (2^-50 of a cycle lands stops to far below a nanometre). */
-#define TP_SWITCH_ITER 50
+/* Bisection steps for the switch time (2^-36 of a cycle: far below a nanometre at any speed). */
+#define TP_SWITCH_ITER 36
 /* Targets checked at once: the nearest and the two after it. */
 #define TP_CHECK_TARGETS 3
 /* Later targets a carried acceleration is checked against at most. */

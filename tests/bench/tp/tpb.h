@@ -64,10 +64,9 @@ void tpb_naive_merge(const tpb_program_t *p, tpb_program_t *out);
 void tpb_measure(const tpb_program_t *p, const tpb_machine_t *mc, const tpb_trace_t *tr, tpb_result_t *r);
 /* tpb_run.c */
 int tpb_run(const tpb_program_t *p, const tpb_machine_t *mc, int queue, tpb_trace_t *tr,
-            double *cpu_max, double *cpu_hist, int hist_bins, long *cycles_out);
+            double *cpu_us, long cpu_cap, long *cycles_out);
 int tpb_run_split(const tpb_program_t *p, const tpb_machine_t *mc, int queue, tpb_trace_t *tr,
-                  double *cpu_max, double *cpu_hist, int hist_bins, long *cycles_out, double *add_cpu,
-                  double *cycle_cpu);
+                  double *cpu_us, long cpu_cap, long *cycles_out, double *add_cpu, double *cycle_cpu);
 void tpb_segment(const tpb_program_t *p, const tpb_machine_t *mc, int k, const double *from,
                  tp_segment_t *s);
 
