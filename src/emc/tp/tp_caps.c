@@ -4,7 +4,9 @@
 
 /* Derivative bounds below this count as zero. */
 #define TP_CAPS_TINY 1e-12
-#define TP_CAPS_ITER 12
+#define TP_CAPS_ITER 14
+/* Lowest cap tried, as a share of the highest (the bisection runs on a log scale). */
+#define TP_CAPS_V_FLOOR 1e-12
 /* Weight of the speed-change time in the choice of the reserve. */
 #define TP_CAPS_CHANGE_SHARE 0.1
 
@@ -113,9 +115,11 @@ static void caps_with_reserve(const tp_bounds_t *b, const tp_axlim_t *l, double 
             if (l->acc[i] > 0.0 && b->d2[i] > TP_CAPS_TINY)
                 v = fmin(v, sqrt(fmax(0.0, l->acc[i] - a_keep * b->d1[i]) / b->d2[i]));
     } else if (usable_acc(b, l, v_hi, with_jerk, j_keep) < a_keep) {
-        double lo = 0.0, hi = v_hi;
+        /* geometric bisection: the answer may lie many decades below v_hi; a cap is never zero
+         * (a region that may not be crossed would stall the executor) */
+        double lo = v_hi * TP_CAPS_V_FLOOR, hi = v_hi;
         for (int k = 0; k < TP_CAPS_ITER; k++) {
-            double mid = 0.5 * (lo + hi);
+            double mid = sqrt(lo * hi);
             if (usable_acc(b, l, mid, with_jerk, j_keep) >= a_keep)
                 lo = mid;
             else
