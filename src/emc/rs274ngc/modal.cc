@@ -75,6 +75,10 @@ void Interp::do_comp(Block &b)
     int orient = 0;
     double radius = g == 411 || g == 421 ? dynamic_comp_radius(b, g, orient)
                                          : tool_comp_radius(b, orient);
+    if (radius < 0) {  // a negative table diameter compensates on the other side
+        radius = -radius;
+        g = g == 410 ? 420 : 410;
+    }
     bool left = g == 410 || g == 411;
     out().comment(left ? "interpreter: cutter radius compensation on left"
                        : "interpreter: cutter radius compensation on right");
