@@ -118,7 +118,7 @@ double Interp::tool_comp_radius(const Block &b, int &orient) const
     if (index < 0)
         throw InterpError("Requested tool " + std::to_string(tool) + " not found in the tool table");
     orient = s_.tools[index].orientation;
-    return s_.tools[index].diameter / 2.0 * s_.machine_to_program();
+    return s_.user_to_program(s_.tools[index].diameter) / 2.0;
 }
 
 // Tool-data index of a block's H word (none or H0: the loaded tool).
@@ -172,9 +172,8 @@ void Interp::apply_tlo(const Pose &tlo)
     s_.tool_offset = tlo;
     s_.current = machine_to_program_pose(m);
     out().use_tool_length_offset(to_canon_pose(tlo));
-    double k = 1.0 / s_.machine_to_program();
     for (int i = 0; i < AX_COUNT; i++)
-        s_.params[5081 + i] = (i >= AX_A && i <= AX_C) ? tlo[i] : tlo[i] * k;
+        s_.params[5081 + i] = (i >= AX_A && i <= AX_C) ? tlo[i] : s_.program_to_user(tlo[i]);
 }
 
 // G54..G59.3 (step 21).
