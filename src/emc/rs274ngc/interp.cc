@@ -1,6 +1,7 @@
 // interp.cc: interpreter life cycle: init, open, line loop, error capture, close and exit.
-#include <cmath>
 #include <algorithm>
+#include <cctype>
+#include <cmath>
 #include <cstdio>
 
 #include "inifile.hh"
@@ -140,6 +141,12 @@ void Interp::open(const std::string &path)
     INTERP_FRAME();
     auto f = load_file(path);
     if (!f) throw InterpError("Unable to open file <" + path + ">");
+    // LinuxCNC reads up to the first non-blank line while opening: a file without one fails
+    // there, before the interpreter is reset (so no ON_RESET is emitted)
+    bool blank = std::all_of(f->lines.begin(), f->lines.end(), [](const std::string &l) {
+        return std::all_of(l.begin(), l.end(), [](unsigned char ch) { return std::isspace(ch); });
+    });
+    if (blank) throw InterpError("File ended with no percent sign (%)");
     open_source(f);
 }
 
