@@ -5,9 +5,6 @@
 
 namespace cutcomp {
 
-// corners turning less than this (radians) either way are tangent: no arc, no trim
-static const double TOLERANCE_CONCAVE_CORNER = 0.05;
-
 // squared value
 static double sq(double v)
 {

@@ -5,9 +5,6 @@
 
 namespace cutcomp {
 
-// corners turning less than this (radians) either way are tangent: no arc, no trim
-static const double TOLERANCE_CONCAVE_CORNER = 0.05;
-
 // the convex corner arc: tool radius about the programmed corner, at the held path's height
 void CompEngine::corner_arc(int line, Vec2 to, const Pose &end)
 {

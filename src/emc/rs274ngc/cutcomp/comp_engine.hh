@@ -7,6 +7,9 @@
 
 namespace cutcomp {
 
+// corners turning less than this (radians) either way are tangent: no arc, no trim
+constexpr double TOLERANCE_CONCAVE_CORNER = 0.05;
+
 // Receives programmed moves and emits LinuxCNC's compensated path: the entry move ends a tool
 // radius beside the programmed end, perpendicular to the entry; every later move is offset by the
 // radius; a convex corner gets an arc of the tool radius about the programmed corner; a concave
