@@ -40,8 +40,10 @@ void CompEngine::next_arc(int line, const Pose &end, Vec2 center, int rotation)
     Vec2 ne = {e.x + radius_ * std::cos(gamma), e.y + radius_ * std::sin(gamma)};
     const double small = TOLERANCE_CONCAVE_CORNER;
     // a near reversal into an arc the tool runs outside of (the middle of an "m") is concave
-    bool concave = beta < -small || beta > M_PIl + small ||
-                   (std::fabs(beta - M_PIl) < small && !inside);
+    // nothing held (a synchronised move flushed it): no corner to trim
+    bool concave = queue_.front_move() &&
+                   (beta < -small || beta > M_PIl + small ||
+                    (std::fabs(beta - M_PIl) < small && !inside));
     if (concave) {
         double r2 = inside ? arc_radius - radius_ : arc_radius + radius_;
         bool after_arc = queue_.front_move()->kind == HeldMove::ARC;

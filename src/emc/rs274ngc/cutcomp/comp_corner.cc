@@ -50,8 +50,9 @@ void CompEngine::next_line(HeldMove::Kind kind, int line, const Pose &end)
     HeldMove *prev = queue_.front_move();
     bool prev_arc = prev && prev->kind == HeldMove::ARC;
     // a near reversal out of an arc the tool runs outside of (the top of an "h") is concave
-    bool concave = beta < -small || beta > M_PIl + small ||
-                   (beta > M_PIl - small && prev_arc && !tool_inside(prev->rotation));
+    // nothing held (a synchronised move flushed it): no corner to trim
+    bool concave = prev && (beta < -small || beta > M_PIl + small ||
+                            (beta > M_PIl - small && prev_arc && !tool_inside(prev->rotation)));
     if (!concave && beta > small) {
         move_end_and_flush(c);
         if (kind == HeldMove::FEED)
