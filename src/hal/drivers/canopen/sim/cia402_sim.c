@@ -11,7 +11,7 @@
 #include "sim_drive.h"
 
 #define SIM_MAX_NODES 8
-#define POLL_MS 1
+#define POLL_MAX_MS 50
 #define DEFAULT_SPEED 200000.0
 
 /* The program: its bus, its drives and the log file. */
@@ -159,6 +159,18 @@ static void read_frames(sim_t *s)
     } while (got == CAN_BUS_BATCH);
 }
 
+/* How long poll may sleep: until the next heartbeat is due (1 to POLL_MAX_MS ms). */
+static int poll_timeout_ms(const sim_t *s)
+{
+    long long now = now_ns(), wait_ms = POLL_MAX_MS;
+    for (int i = 0; i < s->count; i++) {
+        long long due = s->drives[i].next_heartbeat_ns;
+        if (due && (due - now) / 1000000 < wait_ms)
+            wait_ms = (due - now) / 1000000;
+    }
+    return wait_ms < 1 ? 1 : (int)wait_ms;
+}
+
 /* Parse the options; returns the interface name or NULL after printing why. */
 static const char *parse_options(sim_t *s, int argc, char **argv, double *speed)
 {
@@ -215,7 +227,7 @@ int main(int argc, char **argv)
     fflush(stdout);
     for (;;) {
         struct pollfd fds[2] = { { .fd = s.bus.fd, .events = POLLIN }, { .fd = 0, .events = POLLIN } };
-        if (poll(fds, 2, POLL_MS) < 0 && errno != EINTR)
+        if (poll(fds, 2, poll_timeout_ms(&s)) < 0 && errno != EINTR)
             break;
         if (fds[0].revents & POLLIN)
             read_frames(&s);
