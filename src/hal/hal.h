@@ -236,14 +236,14 @@ extern int hal_set_exact_period(void);
 
 /* ---- ports (byte FIFOs owned by port signals) ------------------------------ */
 extern int hal_port_alloc(unsigned size, hal_port_t *port);
-extern bool hal_port_read(hal_port_t port, char *dest, unsigned count);
-extern bool hal_port_peek(hal_port_t port, char *dest, unsigned count);
-extern bool hal_port_peek_commit(hal_port_t port, unsigned count);
-extern bool hal_port_write(hal_port_t port, const char *src, unsigned count);
-extern unsigned hal_port_readable(hal_port_t port);
-extern unsigned hal_port_writable(hal_port_t port);
-extern unsigned hal_port_buffer_size(hal_port_t port);
-extern void hal_port_clear(hal_port_t port);
+extern bool hal_port_read(const hal_port_t *port, char *dest, unsigned count);
+extern bool hal_port_peek(const hal_port_t *port, char *dest, unsigned count);
+extern bool hal_port_peek_commit(const hal_port_t *port, unsigned count);
+extern bool hal_port_write(const hal_port_t *port, const char *src, unsigned count);
+extern unsigned hal_port_readable(const hal_port_t *port);
+extern unsigned hal_port_writable(const hal_port_t *port);
+extern unsigned hal_port_buffer_size(const hal_port_t *port);
+extern void hal_port_clear(const hal_port_t *port);
 #ifdef ULAPI
 /* Sleep-poll until `count` bytes are readable/writable or *stop is set. */
 extern void hal_port_wait_readable(hal_port_t **port, unsigned count, sig_atomic_t *stop);

@@ -12,7 +12,7 @@ struct hal_stream_shm {
     unsigned magic;
     volatile unsigned in;            /* next slot to write */
     volatile unsigned out;           /* next slot to read */
-    unsigned this_sample;            /* sample number of the next write */
+    unsigned this_sample;            /* sample number of the last write (records are numbered from 1) */
     int depth;                       /* slots; holds depth-1 records */
     int num_pins;
     volatile int num_overruns;
@@ -255,7 +255,7 @@ int hal_stream_write(hal_stream_t *stream, union hal_stream_data *buf)
     in = f->in;
     slot = &f->data[(size_t)in * (f->num_pins + 1)];
     memcpy(slot, buf, f->num_pins * sizeof(*buf));
-    slot[f->num_pins].u = f->this_sample++;
+    slot[f->num_pins].u = ++f->this_sample;
     __atomic_store_n(&f->in, (in + 1) % f->depth, __ATOMIC_RELEASE);
     return 0;
 }

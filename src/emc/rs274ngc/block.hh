@@ -36,6 +36,7 @@ struct Block {
     bool g80_dropped = false;   // explicit G80 silently dropped next to another motion code
     std::string comment;        // last (...) comment text, case kept
     bool has_comment = false;
+    std::string py_code;        // ";py,..." / ";pyrun,..." / ";pyreload" text after the ';' (embedded Python)
     std::vector<std::pair<int, double>> num_assign;          // #n=value
     std::vector<std::pair<std::string, double>> named_assign; // #<name>=value
     OKind o_kind = O_NONE;

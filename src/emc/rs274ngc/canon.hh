@@ -117,6 +117,8 @@ public:
 
     // text and program control
     virtual void comment(const std::string &text) = 0;
+    // CANON_ERROR (from embedded Python): an operator error message; ignored by consumers without one
+    virtual void canon_error(const std::string &) {}
     virtual void message(const std::string &text) = 0;
     virtual void log(const std::string &text) = 0;
     virtual void logopen(const std::string &name) = 0;

@@ -20,35 +20,36 @@ bool g0_uses_axes(int g)
 
 } // namespace
 
-// One step of the execution order (LinuxCNC's order of execution); `m_group` names the M group a remapped
-// M code of the block runs at instead of the built-in step (-1: no M group).
-struct ExecStep {
-    void (Interp::*run)(Block &);
-    int m_group;
-};
-
-// LinuxCNC's order of execution (comment through stop).
+// LinuxCNC's order of execution (comment through stop), with the remapped code each step may hand over.
 const ExecStep EXEC_STEPS[] = {
-    {&Interp::step_comment, -1},     {&Interp::do_spindle_mode, -1},
-    {&Interp::do_feed_mode, -1},     {&Interp::do_feed_rate, -1},
-    {&Interp::do_speed, -1},         {&Interp::do_select_tool, -1},
-    {&Interp::do_io, MG_IO},         {&Interp::step_tool_change, MG_TOOL},
-    {&Interp::do_spindle, MG_SPINDLE}, {&Interp::do_coolant, MG_COOLANT},
-    {&Interp::do_overrides, MG_OVERRIDE}, {&Interp::do_user_m, MG_USER},
-    {&Interp::do_dwell, -1},         {&Interp::do_plane, -1},
-    {&Interp::do_units, -1},         {&Interp::do_lathe_mode, -1},
-    {&Interp::do_comp, -1},          {&Interp::do_tool_length, -1},
-    {&Interp::do_coord_system, -1},  {&Interp::do_path_control, -1},
-    {&Interp::do_distance, -1},      {&Interp::do_retract, -1},
-    {&Interp::do_nonmodal, -1},      {&Interp::do_g92_family, -1},
-    {&Interp::step_motion, -1},      {&Interp::step_stop, -1},
+    {&Interp::step_comment, SLOT_NONE, 0},       {&Interp::do_spindle_mode, SLOT_NONE, 0},
+    {&Interp::do_feed_mode, SLOT_NONE, 0},       {&Interp::do_feed_rate, SLOT_F, 0},
+    {&Interp::do_speed, SLOT_S, 0},              {&Interp::do_select_tool, SLOT_T, 0},
+    {&Interp::do_io, SLOT_M, MG_IO},             {&Interp::step_tool_change, SLOT_M, MG_TOOL},
+    {&Interp::do_spindle, SLOT_M, MG_SPINDLE},   {&Interp::do_coolant, SLOT_M, MG_COOLANT},
+    {&Interp::do_overrides, SLOT_M, MG_OVERRIDE}, {&Interp::do_user_m, SLOT_M, MG_USER},
+    {&Interp::do_dwell, SLOT_NONE, 0},           {&Interp::do_plane, SLOT_NONE, 0},
+    {&Interp::do_units, SLOT_NONE, 0},           {&Interp::do_lathe_mode, SLOT_NONE, 0},
+    {&Interp::do_comp, SLOT_NONE, 0},            {&Interp::do_tool_length, SLOT_NONE, 0},
+    {&Interp::do_coord_system, SLOT_NONE, 0},    {&Interp::do_path_control, SLOT_NONE, 0},
+    {&Interp::do_distance, SLOT_NONE, 0},        {&Interp::do_retract, SLOT_NONE, 0},
+    {&Interp::do_nonmodal, SLOT_NONE, 0},        {&Interp::do_g92_family, SLOT_NONE, 0},
+    {&Interp::step_motion, SLOT_G, GG_MOTION},   {&Interp::step_stop, SLOT_M, MG_STOP},
 };
 constexpr size_t EXEC_STEP_COUNT = sizeof EXEC_STEPS / sizeof EXEC_STEPS[0];
+
+// The execution steps (remap_args.cc checks the remapped codes of a block against them).
+const ExecStep *Interp::exec_steps(size_t &count)
+{
+    count = EXEC_STEP_COUNT;
+    return EXEC_STEPS;
+}
 
 // Execute a parsed block.
 InterpStatus Interp::execute_block(Block &b)
 {
     INTERP_FRAME();
+    BlockScope scope(current_block_, &b);
     for (auto &a : b.num_assign) s_.params[a.first] = a.second;
     for (auto &a : b.named_assign) set_named(a.first, a.second);
     if (b.o_kind != O_NONE) return execute_oword(b);
@@ -64,28 +65,22 @@ InterpStatus Interp::execute_block(Block &b)
 InterpStatus Interp::execute_steps(Block &b, size_t first)
 {
     INTERP_FRAME();
+    BlockScope scope(current_block_, &b);
     for (size_t i = first; i < EXEC_STEP_COUNT; i++) {
         const ExecStep &st = EXEC_STEPS[i];
-        int m = st.m_group >= 0 ? b.m_modes[st.m_group] : -1;
-        if (m != -1 && m_remaps_.count(m)) {
-            start_remap(b, m_remaps_.at(m), "M" + std::to_string(m), i + 1);
-            return INTERP_OK;
-        }
-        if (st.run == &Interp::step_motion && remapped_motion(b)) {
-            int g = b.motion() != -1 ? b.motion() : s_.motion_mode;
-            start_remap(b, g_remaps_.at(g), g_code_text(g), i + 1);
-            return INTERP_OK;
-        }
+        const RemapDef *def = have_remaps_ && st.slot != SLOT_NONE ? remap_due(b, st) : nullptr;
+        if (def) return start_remap(b, *def, i);
         (this->*st.run)(b);
         if (b.status != INTERP_OK) return (InterpStatus)b.status;
     }
     return b.execute_finish ? INTERP_EXECUTE_FINISH : INTERP_OK;
 }
 
-// Step 3: the comment or active comment.
+// Step 3: the comment or active comment, and a ;py, statement.
 void Interp::step_comment(Block &b)
 {
     if (b.has_comment) do_comment(b);
+    if (!b.py_code.empty()) python_comment(b.py_code);
 }
 
 // Step 10: M6/M61; a tool change ends the block with execute-finish.

@@ -85,6 +85,7 @@ void Interp::init()
     CanonPose p = c.get_external_position();
     s_.current = Pose{p.x, p.y, p.z, p.a, p.b, p.c, p.u, p.v, p.w};
     write_var_file();
+    start_python();
 }
 
 // Load a file into memory (nullptr when unreadable).
@@ -154,6 +155,7 @@ void Interp::open_source(const std::shared_ptr<SourceFile> &f)
 {
     INTERP_FRAME();
     const std::string &path = f->path;
+    remap_stack_.clear();
     calls_.resize(1);
     calls_[0] = CallFrame();
     calls_[0].file = f;
@@ -182,6 +184,10 @@ void Interp::exit()
 {
     INTERP_FRAME();
     write_var_file();
+    if (py_) {
+        PyOutcome o = py_->call_delete();
+        if (o.kind == PyOutcome::ERROR) fprintf(stderr, "%s\n", o.error.c_str());
+    }
     s_.line_text.clear();
     real_out_.on_reset();
 }
@@ -190,6 +196,13 @@ void Interp::exit()
 InterpStatus Interp::execute_next()
 {
     INTERP_FRAME();
+    if (remap_suspended()) {
+        try {
+            return resume_remap();
+        } catch (const InterpError &e) {
+            return fail(e, s_.line_text);
+        }
+    }
     CallFrame &f = calls_.back();
     if (!f.file || f.pos >= f.file->lines.size()) {
         s_.line_text.clear();
@@ -218,6 +231,18 @@ InterpStatus Interp::execute_next()
 InterpStatus Interp::execute_line(const std::string &text)
 {
     INTERP_FRAME();
+    if (remap_suspended()) {
+        if (text.find_first_not_of(" \t\r\n") != std::string::npos) {
+            error_ = "Cannot execute '" + text + "': a remapped code waits to be resumed";
+            error_line_ = text;
+            return INTERP_ERROR;
+        }
+        try {
+            return resume_remap();
+        } catch (const InterpError &e) {
+            return fail(e, s_.line_text);
+        }
+    }
     if (calls_.size() <= 1 && (calls_.empty() || calls_[0].flow.empty())) total_iterations_ = 0;
     return run_line(rstrip(text));
 }
@@ -230,31 +255,45 @@ InterpStatus Interp::run_line(const std::string &raw)
     eof_error_ = false;
     error_stack_.clear();
     try {
-        if (line_budget_ >= 0 && line_budget_-- == 0) throw InterpError("Line budget exhausted");
-        if (skipping_) {
-            std::string name;
-            OKind kind;
-            if (!peek_oword(raw, name, kind) || !skip_match(name, kind)) return INTERP_OK;
-        }
-        s_.params[5600] = real_out_.get_external_toolchanger_fault();
-        s_.params[5601] = real_out_.get_external_toolchanger_reason();
-        Block b;
-        parse_line(raw, b);
-        if (b.block_delete && block_delete_) return INTERP_OK;
-        return execute_block(b);
+        return run_line_body(raw);
     } catch (const InterpError &e) {
-        error_ = e.what();
-        auto at = dynamic_cast<const InterpErrorAt *>(&e);
-        error_line_ = at ? at->line() : raw;
-        unwind_after_error();
-        return INTERP_ERROR;
+        return fail(e, raw);
     }
+}
+
+// Skip, parse and execute one line; errors propagate.
+InterpStatus Interp::run_line_body(const std::string &raw)
+{
+    INTERP_FRAME();
+    if (line_budget_ >= 0 && line_budget_-- == 0) throw InterpError("Line budget exhausted");
+    if (skipping_) {
+        std::string name;
+        OKind kind;
+        if (!peek_oword(raw, name, kind) || !skip_match(name, kind)) return INTERP_OK;
+    }
+    s_.params[5600] = real_out_.get_external_toolchanger_fault();
+    s_.params[5601] = real_out_.get_external_toolchanger_reason();
+    Block b;
+    parse_line(raw, b);
+    if (b.block_delete && block_delete_) return INTERP_OK;
+    return execute_block(b);
+}
+
+// Record an error (an InterpErrorAt names its own line, e.g. the call line a remap generates) and unwind.
+InterpStatus Interp::fail(const InterpError &e, const std::string &raw)
+{
+    error_ = e.what();
+    auto at = dynamic_cast<const InterpErrorAt *>(&e);
+    error_line_ = at ? at->line() : raw;
+    unwind_after_error();
+    return INTERP_ERROR;
 }
 
 // After an error: drop subroutine levels, skips and held comp moves.
 void Interp::unwind_after_error()
 {
     INTERP_FRAME();
+    remap_stack_.clear();
     while (calls_.size() > 1) pop_call();
     skipping_ = false;
     nurbs_open_ = false;
@@ -323,6 +362,7 @@ bool Interp::load_ini(const std::string &path)
     if (auto v = ini.Find("SUBROUTINE_PATH", "RS274NGC")) st.subroutine_path = split_path(*v);
     if (auto v = ini.Find("USER_M_PATH", "RS274NGC")) st.user_m_path = split_path(*v);
     if (auto v = ini.Find("PARAMETER_FILE", "RS274NGC")) var_file_ = *v;
-    load_remaps(ini.FindAll("REMAP", "RS274NGC"));
+    load_remaps(ini);
+    load_python_config(ini);
     return true;
 }

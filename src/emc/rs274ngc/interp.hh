@@ -10,10 +10,13 @@
 #include <vector>
 
 #include "block.hh"
+#include "block_steps.hh"
 #include "canon.hh"
 #include "interp_base.hh"
 #include "interp_hooks.hh"
 #include "interp_state.hh"
+#include "py_host.hh"
+#include "remap_def.hh"
 #include "spline_geom.hh"
 #include "stack_frame.hh"
 
@@ -45,13 +48,6 @@ struct FlowFrame {
     long iterations = 0;           // loop passes so far (runaway guard)
 };
 
-// One REMAP= entry of the INI file (ngc procedures only).
-struct RemapDef {
-    int group = -1;                // modal group the code joins
-    std::string argspec;           // letters: upper = required, lower = optional, '@' positional
-    std::string ngc;               // subroutine name
-};
-
 // Position after the block-delete slash and line number of a normalized line.
 size_t skip_line_number(const std::string &t);
 
@@ -60,9 +56,6 @@ bool peek_label(const std::string &t, size_t &pos, std::string &name);
 
 // "<name>" for a named O-word label, the number for a numbered one.
 std::string label_text(const std::string &name);
-
-// "G88.1" for the G code ×10 881.
-std::string g_code_text(int g);
 
 // Fanuc label "O<n>" of a bare program-number line ("" when the line is not one).
 std::string fanuc_label_name(const std::string &line);
@@ -80,10 +73,7 @@ struct CallFrame {
     SavedModal saved;              // M70/M73 context of this level
     bool autorestore = false;      // M73: restore on return
     bool fanuc = false;            // M98 call (#1-#30 global)
-    bool remap = false;            // a REMAP procedure (counts in _remap_level)
-    int remap_motion = -1;         // remapped motion code to restore on return
-    std::shared_ptr<Block> resume_block; // REMAP: the suspended block to finish on return
-    size_t resume_step = 0;        // its next execution step
+    bool python = false;           // a Python O-word sub or remap body (no lines to read)
     long fanuc_count = 0;          // M98 L repeats left
     long fanuc_iterations = 0;
 };
@@ -94,6 +84,8 @@ struct SubDef {
     size_t line = 0;               // index of the "sub" (or bare Fanuc "O<n>") line
     bool fanuc = false;            // Fanuc-style "O<n>" ... "M99" program
 };
+
+class IniFile;
 
 // The interpreter.
 class Interp : public InterpBase, public ProfileSource {
@@ -146,6 +138,10 @@ public:
     // mark the process as task (#<_task> = 1)
     void set_task(bool t) override { task_ = t; }
     void set_loop_on_main_m99(bool on) override { loop_main_m99_ = on; }
+    // the modal state as LinuxCNC's activeGCodes[17] / activeMCodes[10] / activeSettings[5] (nml.md §5)
+    void active_g_codes(int codes[17]) const;
+    void active_m_codes(int codes[10]) const;
+    void active_settings(double settings[5]) const;
     // ProfileSource: evaluated blocks of a subroutine
     std::vector<Block> sub_blocks(const std::string &name) override;
     void profile_line(std::vector<Block> &blocks, const std::string &name);
@@ -207,6 +203,7 @@ private:
     bool find_sub(const std::string &name, SubDef &def, bool fanuc);
     bool find_sub_file(const std::string &name, SubDef &def);
     bool lookup_sub(const std::string &name, SubDef &def);
+    std::shared_ptr<SourceFile> load_sub_file(const std::string &path);
     SubScan scan_for_sub(const SourceFile &f, size_t from, const std::string &name, size_t &line);
     void check_sub_style(const SubDef &def, bool fanuc) const;
     [[noreturn]] void sub_not_found(const std::string &name, bool fanuc);
@@ -344,21 +341,55 @@ private:
     void restore_modal_codes(const SavedModal &m, Block &b) const;
     void restore_coolant(const SavedModal &m, bool first);
 
-    // REMAP= support (remap.cc)
-    void load_remaps(const std::vector<std::string> &lines);
-    bool parse_remap(const std::string &line, RemapDef &def, char &kind, double &number) const;
-    bool remapped_motion(const Block &b) const;
-    std::vector<std::pair<const RemapDef *, std::string>> block_remaps(const Block &b) const;
+    // REMAP= configuration (remap/remap_config.cc)
+    void load_remaps(const IniFile &ini);
+    std::string remap_parse_line(const std::string &line, RemapDef &def) const;
+    std::string remap_parse_code(const std::string &word, RemapDef &def) const;
+    std::string remap_parse_option(const std::string &key, const std::string &value, RemapDef &def) const;
+    std::string remap_check_group(RemapDef &def) const;
+    const RemapDef *letter_remap(char c) const;
+    static int builtin_g_group(int g);
+    static int builtin_m_group(int m);
+
+    // running remapped codes (remap/remap_exec.cc, remap/remap_args.cc)
+    static const ExecStep *exec_steps(size_t &count);
+    const RemapDef *remap_due(const Block &b, const ExecStep &step) const;
+    bool remap_active(const RemapDef *def) const;
     void check_remap_args(const Block &b);
-    void check_remap_state(const RemapDef &def, const std::string &code) const;
     bool remap_uses_word(const Block &b, char c) const;
-    void start_remap(const Block &b, const RemapDef &def, const std::string &code, size_t resume);
+    void remap_words(const Block &b, const RemapDef &def, std::vector<double> &positional,
+                     std::map<std::string, double> &named, bool check_state) const;
+    void consume_remapped(Block &b, const RemapDef &def) const;
+    InterpStatus start_remap(const Block &b, const RemapDef &def, size_t step);
+    void push_remap_frame(RemapCall &rc, const std::vector<double> &positional,
+                          const std::map<std::string, double> &named);
+    InterpStatus remap_body();
+    InterpStatus remap_after_body();
+    InterpStatus remap_complete();
+    InterpStatus remap_outcome(const PyOutcome &o, RemapPhase phase);
+    InterpStatus resume_remap();
+    bool remap_suspended() const;
+    bool in_remap_frame() const;
+
+    // embedded Python (python/py_interp.cc)
+    void load_python_config(const IniFile &ini);
+    PyHost *python(const char *why);
+    void start_python();
+    bool python_comment(const std::string &text);
+    bool python_oword(Block &b);
+    bool python_named(const std::string &name, double &v);
+    static std::string semicolon_python(const std::string &raw);
+    InterpStatus execute_nested(const std::string &text);
+    InterpStatus run_frame_line();
+    InterpStatus run_line_body(const std::string &raw);
+    InterpStatus fail(const InterpError &e, const std::string &raw);
 
     // parameter file (varfile.cc) and predefined parameters (predef.cc)
     void read_var_file();
     std::string var_file_line(const char *line, int &last);
     void write_var_file();
     bool predefined(const std::string &name, double &v);
+    static std::vector<std::string> predefined_names();
     bool hal_value(const std::string &name, double &v);
     bool predefined_position(const std::string &name, double &v) const;
     bool interp_value(const std::string &name, double &v) const;
@@ -372,6 +403,7 @@ private:
     bool var_file_bad_ = false;      // the .var file was refused: never rewrite it
     std::vector<CallFrame> calls_;
     std::map<std::string, SubDef> subs_;
+    std::map<std::string, std::pair<long long, std::shared_ptr<SourceFile>>> sub_files_;  // path -> (mtime+size, file)
     std::map<std::string, double> globals_;
     std::map<std::string, double> ini_cache_;
     std::string error_, error_line_;
@@ -398,8 +430,20 @@ private:
     long total_iterations_ = 0;    // loop passes since the program (or MDI command) started
     std::string ini_path_;
     std::map<int, RemapDef> g_remaps_, m_remaps_;
-    int remap_level_ = 0;
+    std::map<char, RemapDef> letter_remaps_;   // T, S and F
+    bool have_remaps_ = false;                 // any REMAP= line loaded (else blocks skip the remap checks)
+    std::vector<RemapCall> remap_stack_;       // running remaps; _remap_level is its size
+    const Block *current_block_ = nullptr;     // the block being executed (Python's blocks[0])
+    PythonConfig py_config_;
+    bool py_configured_ = false;               // [PYTHON] present or Python needed by a REMAP
+    bool py_failed_ = false;                   // the plugin could not be started
+    std::unique_ptr<PyHost> py_;
+    std::string py_errormsg_;                  // set_errormsg() text for an INTERP_ERROR return
+    std::set<std::string> py_named_;           // #<_name>s defined by module namedparams
+    bool py_finish_request_ = false;           // Python set a queue-buster flag: end the block with execute-finish
     bool reading_profile_ = false;   // parsing a lathe-cycle profile: U and W are incremental X and Z
+
+    friend struct InterpAccess;
 };
 
 #endif

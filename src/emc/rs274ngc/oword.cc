@@ -142,8 +142,8 @@ void Interp::o_sub(Block &b)
     skip_sub_ = true;
 }
 
-// "return"/"endsub": leave the subroutine with an optional value; a remap procedure's
-// return finishes the block that called it.
+// "return"/"endsub": leave the subroutine with an optional value; for a remap procedure the epilog
+// runs at this call level, then the block that called it finishes.
 InterpStatus Interp::o_return(Block &b)
 {
     INTERP_FRAME();
@@ -154,18 +154,18 @@ InterpStatus Interp::o_return(Block &b)
         return INTERP_OK;
     }
     if (f.autorestore && f.saved.valid) modal_restore(f.saved);
-    std::shared_ptr<Block> resume = f.resume_block;
-    size_t step = f.resume_step;
-    pop_call();
+    bool remap = in_remap_frame();
+    if (!remap) pop_call();
     value_ = b.o_has_expr ? b.o_value : 0.0;
     value_returned_ = b.o_has_expr ? 1.0 : 0.0;
-    return resume ? execute_steps(*resume, step) : INTERP_OK;
+    return remap ? remap_after_body() : INTERP_OK;
 }
 
 // "call": find the subroutine and enter it.
 void Interp::o_call(Block &b)
 {
     INTERP_FRAME();
+    if (python_oword(b)) return;
     SubDef def;
     if (!find_sub(b.o_name, def, false)) sub_not_found(b.o_name, false);
     push_call(def, b.o_name, b.o_args, false);
@@ -199,7 +199,10 @@ std::string label_text(const std::string &name)
 void Interp::sub_not_found(const std::string &name, bool)
 {
     INTERP_FRAME();
-    throw InterpError("EOF in file:" + calls_.back().file->path + " seeking o-word: o" +
+    size_t level = calls_.size() - 1;
+    while (level > 0 && !calls_[level].file) level--;   // Python's call levels read no file
+    const std::string &path = calls_[level].file ? calls_[level].file->path : std::string("(MDI)");
+    throw InterpError("EOF in file:" + path + " seeking o-word: o" +
                       label_text(name) + " from line: " + std::to_string(s_.sequence_number));
 }
 
@@ -242,7 +245,7 @@ bool Interp::find_sub(const std::string &name, SubDef &def, bool fanuc)
         return true;
     }
     CallFrame &f = calls_.back();
-    if (calls_.size() > 1 && !fanuc) return find_sub_file(name, def);
+    if ((calls_.size() > 1 && !fanuc) || !f.file) return !fanuc && find_sub_file(name, def);
     size_t line;
     SubScan hit = scan_for_sub(*f.file, f.pos, name, line);
     if (hit == SubScan::PERCENT) {
@@ -271,7 +274,7 @@ bool Interp::find_sub_file(const std::string &name, SubDef &def)
     size_t slash = main.rfind('/');
     dirs.push_back(slash == std::string::npos ? "." : main.substr(0, slash));
     for (const std::string &d : dirs) {
-        auto file = load_file((d.empty() ? std::string(".") : d) + "/" + name + ".ngc");
+        auto file = load_sub_file((d.empty() ? std::string(".") : d) + "/" + name + ".ngc");
         if (!file) continue;
         size_t line;
         if (scan_for_sub(*file, 0, name, line) != SubScan::SUB) continue;
@@ -312,8 +315,6 @@ void Interp::pop_call()
     CallFrame &f = calls_.back();
     if (!f.fanuc)
         for (int i = 1; i <= 30; i++) s_.params[i] = f.saved_args[i];
-    if (f.remap) remap_level_--;
-    if (f.remap_motion != -1) s_.motion_mode = f.remap_motion;
     calls_.pop_back();
     s_.call_level = (int)calls_.size() - 1;
 }

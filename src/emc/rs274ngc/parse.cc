@@ -112,6 +112,7 @@ void Interp::parse_line(const std::string &raw, Block &b)
 {
     INTERP_FRAME();
     std::string t = normalize(raw);
+    b.py_code = semicolon_python(raw);
     size_t pos = 0;
     if (pos < t.size() && t[pos] == '/') {
         b.block_delete = true;
@@ -274,6 +275,8 @@ void Interp::parse_m(const std::string &t, size_t &pos, Block &b)
     int m = to_int(read_real_value(t, pos));
     if (m < 0) throw InterpError("Negative m code used");
     auto remap = m_remaps_.find(m);
+    if (remap != m_remaps_.end() && remap->second.builtin && remap_active(&remap->second))
+        remap = m_remaps_.end();   // inside its own procedure a remapped built-in is the built-in
     if (m > 199 && remap == m_remaps_.end())
         throw InterpError("M-code greater than 199: M" + std::to_string(m));
     if (b.m_count >= 4) throw InterpError("Too many m codes on line");
@@ -342,4 +345,16 @@ void Interp::parse_o_args(const std::string &t, size_t &pos, Block &b)
             throw InterpError("Unexpected character after O-word");
         }
     }
+}
+
+// Modal group of a built-in G code x10, -1 when it is not one (REMAP= refuses built-in codes).
+int Interp::builtin_g_group(int g)
+{
+    return g_group(g);
+}
+
+// Modal group of a built-in M code, -1 when it is not one.
+int Interp::builtin_m_group(int m)
+{
+    return m == 98 ? MG_STOP : m_group(m);
 }

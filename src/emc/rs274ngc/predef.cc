@@ -82,6 +82,7 @@ std::string upper(std::string v)
 bool Interp::predefined(const std::string &name, double &v)
 {
     INTERP_FRAME();
+    if (python_named(name, v)) return true;
     for (const Predef &p : PREDEFS) {
         if (name == p.name) {
             v = p.fn(s_);
@@ -113,7 +114,7 @@ bool Interp::predefined_position(const std::string &name, double &v) const
 bool Interp::interp_value(const std::string &name, double &v) const
 {
     const struct { const char *name; double value; } values[] = {
-        {"_task", task_ ? 1.0 : 0.0}, {"_remap_level", (double)remap_level_},
+        {"_task", task_ ? 1.0 : 0.0}, {"_remap_level", (double)remap_stack_.size()},
         {"_value", value_}, {"_value_returned", value_returned_},
     };
     for (const auto &e : values) {
@@ -150,4 +151,17 @@ bool Interp::hal_value(const std::string &name, double &v)
     size_t close = name.find(']');
     if (close != name.size() - 1 || !s_.settings.hal_pin_vars || !hal_reader_) return false;
     return hal_reader_(name.substr(5, close - 5), v);
+}
+
+// Names of the built-in predefined parameters (for Python's params.globals()).
+std::vector<std::string> Interp::predefined_names()
+{
+    std::vector<std::string> names;
+    for (const Predef &p : PREDEFS) names.push_back(p.name);
+    for (const char *axis = "xyzabcuvw"; *axis; axis++) {
+        names.push_back(std::string("_") + *axis);
+        names.push_back(std::string("_abs_") + *axis);
+    }
+    for (const char *n : {"_task", "_remap_level", "_value", "_value_returned"}) names.push_back(n);
+    return names;
 }

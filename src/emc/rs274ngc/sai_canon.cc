@@ -339,6 +339,7 @@ void SaiCanon::set_aux_output_value(int n, double v) { emitf("SET_AUX_OUTPUT_VAL
 void SaiCanon::comment(const std::string &t) { emitf("COMMENT(\"%s\")", t.c_str()); }
 // Print the MESSAGE call.
 void SaiCanon::message(const std::string &t) { emitf("MESSAGE(\"%s\")", t.c_str()); }
+void SaiCanon::canon_error(const std::string &t) { emitf("CANON_ERROR(%s)", t.c_str()); }
 // Print the LOG call.
 void SaiCanon::log(const std::string &t) { emitf("LOG(\"%s\")", t.c_str()); }
 // Print the LOGOPEN call.

@@ -78,6 +78,7 @@ public:
     int wait_input(int, int, int, double) override { return 0; }
     void comment(const std::string &text) override;
     void message(const std::string &text) override;
+    void canon_error(const std::string &text) override;
     void log(const std::string &text) override;
     void logopen(const std::string &name) override;
     void logappend(const std::string &name) override;

@@ -12,17 +12,19 @@
 constexpr size_t STACK_FRAME_MAX = 64;
 
 // Appends its function's signature to `stack` when an exception unwinds it (innermost first).
-// std::uncaught_exceptions() rising between construction and destruction means unwinding, so
-// there is no process-wide state and the normal path costs one counter read.
+// An exception in flight while the frame is destroyed means unwinding, so there is no
+// process-wide state. Only the destructor reads the counter: interpreter functions never run
+// from a destructor during unwinding, so no frame starts with an exception already in flight,
+// and the normal path costs one counter read per call.
 class StackFrame {
 public:
-    // remember where to record and how many exceptions were in flight
+    // remember where to record
     StackFrame(std::vector<std::string> &stack, const char *signature)
-        : stack_(stack), signature_(signature), in_flight_(std::uncaught_exceptions()) {}
+        : stack_(stack), signature_(signature) {}
     // record the signature when an exception is unwinding through this frame
     ~StackFrame()
     {
-        if (std::uncaught_exceptions() > in_flight_ && stack_.size() < STACK_FRAME_MAX)
+        if (std::uncaught_exceptions() > 0 && stack_.size() < STACK_FRAME_MAX)
             stack_.emplace_back(signature_);
     }
     StackFrame(const StackFrame &) = delete;
@@ -31,7 +33,6 @@ public:
 private:
     std::vector<std::string> &stack_;
     const char *signature_;
-    int in_flight_;
 };
 
 // Declares the frame of the enclosing Interp member function.

@@ -34,7 +34,7 @@ static void print_record(FILE *out, hal_stream_t *stream, const union hal_stream
     have_last = 1;
     last = sampleno;
     if (tag) {
-        fprintf(out, "%u ", sampleno);  /* the HAL library numbers records from 0 */
+        fprintf(out, "%u ", sampleno - 1);  /* the HAL library numbers records from 1, tags start at 0 */
     }
     for (n = 0; n < count; n++) {
         print_field(out, hal_stream_element_type(stream, n), &rec[n]);
