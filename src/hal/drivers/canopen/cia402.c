@@ -301,9 +301,27 @@ int rtapi_app_main(void)
     return 0;
 }
 
-/* Close the interfaces and remove the component. */
+/* Leave every drive safe: RPDO1 with Shutdown and a SYNC, then NMT pre-operational. */
+static void say_goodbye(void)
+{
+    co_frame_t rpdo, nmt[CIA402_MAX_DRIVES];
+    co_frame_t sync = { .id = self->cfg.sync_cob_id, .len = 0 };
+    for (int d = 0; d < self->cfg.drive_count; d++)
+        if (cia402_node_goodbye(&self->nodes[d], &rpdo, &nmt[d]))
+            can_bus_queue(&self->buses[self->bus_of[d]].io, &rpdo);
+    for (int b = 0; b < self->bus_count; b++)
+        can_bus_queue(&self->buses[b].io, &sync);
+    for (int d = 0; d < self->cfg.drive_count; d++)
+        can_bus_queue(&self->buses[self->bus_of[d]].io, &nmt[d]);
+    for (int b = 0; b < self->bus_count; b++)
+        can_bus_flush(&self->buses[b].io);
+}
+
+/* Leave the drives safe, close the interfaces and remove the component. */
 void rtapi_app_exit(void)
 {
+    if (self)
+        say_goodbye();
     hal_exit(comp_id);
     release();
 }

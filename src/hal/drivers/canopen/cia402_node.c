@@ -438,3 +438,17 @@ int cia402_node_transmit(cia402_node_t *n, const cia402_command_t *cmd, long lon
         return 0;
     }
 }
+
+/* The frames that leave the drive safe when the driver unloads. */
+int cia402_node_goodbye(cia402_node_t *n, co_frame_t *rpdo, co_frame_t *nmt)
+{
+    nmt_frame(n, CO_NMT_PRE_OPERATIONAL, nmt);
+    if (!n->was_running || n->link == CIA402_LINK_CONFIGURE || n->link == CIA402_LINK_STARTING)
+        return 0;
+    n->controlword = CIA402_CW_SHUTDOWN;
+    n->target = n->position_raw;
+    *rpdo = (co_frame_t){ .id = (uint16_t)(CO_RPDO1 + n->cfg->node_id), .len = PDO_BYTES };
+    co_put16(rpdo->data, n->controlword);
+    co_put32(&rpdo->data[2], (uint32_t)n->target);
+    return 1;
+}

@@ -100,6 +100,11 @@ void cia402_node_check(cia402_node_t *n, long long now_ns);
 int cia402_node_transmit(cia402_node_t *n, const cia402_command_t *cmd, long long now_ns, long period_ns,
                          co_frame_t *out);
 
+/* The frames that leave the drive safe when the driver unloads: RPDO1 with Shutdown (when PDOs
+   run; a SYNC must follow) into *rpdo, NMT enter pre-operational into *nmt. Returns 1 when *rpdo
+   was written. */
+int cia402_node_goodbye(cia402_node_t *n, co_frame_t *rpdo, co_frame_t *nmt);
+
 /* TRUE while the drive follows the position command. */
 int cia402_node_enabled(const cia402_node_t *n);
 

@@ -128,8 +128,13 @@ sed -i 's/^SDO = 2000:01 u32 77/SDO = 2001:00 u32 5/' $T/drives.ini
 wait_for "drive 0 faulted" pin_is cia402.0.fault TRUE
 pins 0 fault-code ready
 new_messages | sed "s|$T/||"
+echo "== unload with drive 1 enabled: it is shut down and made pre-operational"
+halcmd setp cia402.1.enable 1
+wait_for "drive 1 enabled" pin_is cia402.1.enabled TRUE
 halcmd stop
 halcmd unload all
+sleep 0.5
+tail -n 2 $T/sim.log
 echo quit >&3
 wait $sim
 echo "simulator exit status $?"
