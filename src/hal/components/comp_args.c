@@ -1,6 +1,7 @@
 /* comp_args.c: set-up shared by the hand-written configurable modules (typed pins, config specs). */
 #include "rtapi.h"
 #include "rtapi_errno.h"
+#include "rtapi_string.h"
 #include "comp_args.h"
 
 static int comp_args_id;
@@ -28,30 +29,43 @@ int comp_sel_bits(int size)
     return n;
 }
 
-/* Decimal size after the two type letters of spec, or -1 when missing, malformed or too big. */
-long comp_spec_size(const char *spec, long max_size)
-{
-    long v = 0;
-    const char *p;
-    if (!spec[0] || !spec[1] || !spec[2]) return -1;
-    for (p = spec + 2; *p; p++) {
-        if (*p < '0' || *p > '9' || v > max_size) return -1;
-        v = v * 10 + (*p - '0');
-    }
-    return v;
-}
-
-/* Size of a "TTN" spec, its type letters in lower case in types[]; logs and returns -EINVAL if bad. */
+/* Size and type letters of a config string: digits and up to two type letters in any order
+ * ("bb8", "8bb", "b8f"); one letter means the same output type. Logs and returns -EINVAL if bad. */
 long comp_spec_parse(const char *who, const char *spec, long max_size, char types[2])
 {
-    long size = comp_spec_size(spec, max_size);
-    if (!comp_type_word(spec[0]) || !comp_type_word(spec[1]) || size < 1 || size > max_size) {
-        rtapi_print_msg(RTAPI_MSG_ERR, "%s: ERROR: bad config '%s' (want two of b f s u "
-                        "and a size 1..%d)\n", who, spec, (int)max_size);
+    long size = 0;
+    int ntypes = 0;
+    for (const char *p = spec; *p; p++) {
+        if (*p >= '0' && *p <= '9') {
+            size = size * 10 + (*p - '0');
+            if (size > max_size)
+                size = max_size;
+        } else if (comp_type_word(*p)) {
+            if (ntypes == 2) {
+                rtapi_print_msg(RTAPI_MSG_ERR, "%s: too many type specifiers in fmt string\n", who);
+                return -EINVAL;
+            }
+            types[ntypes++] = *p | 0x20;
+        } else {
+            rtapi_print_msg(RTAPI_MSG_ERR, "%s: invalid character in fmt string\n", who);
+            return -EINVAL;
+        }
+    }
+    if (size == 0) {
+        rtapi_print_msg(RTAPI_MSG_ERR, "%s: No entry count given\n", who);
         return -EINVAL;
     }
-    types[0] = spec[0] | 0x20;
-    types[1] = spec[1] | 0x20;
+    if (size == 1) {
+        rtapi_print_msg(RTAPI_MSG_ERR, "%s: A one-element %s makes no sense\n", who,
+                        strstr(who, "demux") ? "demux" : "mux");
+        return -EINVAL;
+    }
+    if (ntypes == 0) {
+        rtapi_print_msg(RTAPI_MSG_ERR, "%s: No type specifiers in fmt string\n", who);
+        return -EINVAL;
+    }
+    if (ntypes == 1)
+        types[1] = types[0];
     return size;
 }
 
@@ -59,7 +73,7 @@ long comp_spec_parse(const char *who, const char *spec, long max_size, char type
 int comp_select_init(comp_select_t *s, const char *who, const char *spec, long max_size)
 {
     char types[2];
-    long size = comp_spec_parse(who, spec, max_size, types);
+    long size = comp_spec_parse(who, spec ? spec : "", max_size, types);
     if (size < 0) return (int)size;
     s->in_type = types[0];
     s->out_type = types[1];
@@ -94,6 +108,82 @@ int comp_count_args(char *const args[], int max)
     while (n < max && args[n] && args[n][0])
         n++;
     return n;
+}
+
+/* One past the last non-empty string of a string-array module argument (empty ones before it count). */
+int comp_last_arg(char *const args[], int max)
+{
+    int n = max;
+    while (n > 0 && !(args[n - 1] && args[n - 1][0]))
+        n--;
+    return n;
+}
+
+/* Check one names= entry: not empty, no blanks or control characters; logs and returns -EINVAL. */
+int comp_name_check(const char *who, int index, const char *name)
+{
+    if (!name || !name[0]) {
+        rtapi_print_msg(RTAPI_MSG_ERR, "%s: ERROR: names[%d] is invalid (empty string)\n", who, index);
+        return -EINVAL;
+    }
+    for (const char *p = name; *p; p++) {
+        if ((unsigned char)*p <= ' ' || *p == 0x7f) {
+            rtapi_print_msg(RTAPI_MSG_ERR, "%s: ERROR: names[%d] \"%s\" contains a blank or "
+                            "control character\n", who, index, name);
+            return -EINVAL;
+        }
+    }
+    if (strlen(name) > HAL_NAME_LEN) {
+        rtapi_print_msg(RTAPI_MSG_ERR, "%s: ERROR: names[%d] \"%s\" is too long (at most %d "
+                        "characters)\n", who, index, name, HAL_NAME_LEN);
+        return -EINVAL;
+    }
+    return 0;
+}
+
+/* Number of names= entries (an empty names= is none); an empty or bad entry gives -EINVAL. */
+int comp_names_count(const char *who, char *const names[], int max)
+{
+    int n = max;
+    while (n > 0 && !names[n - 1])
+        n--;
+    if (n == 1 && !names[0][0])
+        return 0;
+    for (int i = 0; i < n; i++)
+        if (comp_name_check(who, i, names[i]) < 0)
+            return -EINVAL;
+    return n;
+}
+
+/* Channels of a num_chan=/names= module (num_chan 0 means not given); logs and returns -EINVAL. */
+int comp_chan_count(const comp_chan_spec_t *spec, int num_chan, char *const names[])
+{
+    int n = comp_names_count(spec->who, names, spec->max_chan);
+    if (n < 0)
+        return n;
+    if (num_chan && n) {
+        rtapi_print_msg(RTAPI_MSG_ERR, "num_chan= and names= are mutually exclusive\n");
+        return -EINVAL;
+    }
+    if (n)
+        return n;
+    if (num_chan == 0)
+        return spec->default_chan;
+    if (num_chan < 0 || num_chan > spec->max_chan) {
+        rtapi_print_msg(RTAPI_MSG_ERR, "%s: ERROR: invalid number of channels: %d\n",
+                        spec->who, num_chan);
+        return -EINVAL;
+    }
+    return num_chan;
+}
+
+/* Prefix of channel i: its names= entry, else <prefix>.<i>. */
+void comp_chan_name(const comp_chan_spec_t *spec, char *const names[], int i, char *buf, size_t len)
+{
+    if (names[0] && names[0][0])
+        rtapi_snprintf(buf, len, "%s", names[i]);
+    else
+        rtapi_snprintf(buf, len, "%s.%d", spec->prefix, i);
 }
 
 /* hal_init the component, make instances 0..count-1, then hal_ready; exit HAL on failure. */

@@ -91,7 +91,7 @@ set biquad.0.enable 1
 cycle 2
 get biquad.0.valid biquad.0.out
 S
-echo "ilowpass: a result beyond s32 saturates instead of wrapping"
+echo "ilowpass: a result beyond s32 wraps (low 32 bits of the 64-bit result, as LinuxCNC)"
 run <<'S'
 load ilowpass
 functs ilowpass.0
@@ -144,7 +144,7 @@ set knob2float.0.counts -2147483648
 cycle 1
 get knob2float.0.out
 S
-echo "mux_generic: a selection beyond 2^31 is out of range and leaves out alone"
+echo "mux_generic: a selection beyond 2^31 picks the last input"
 run <<'S'
 load mux_generic config=ff4
 functs mux-gen.00
