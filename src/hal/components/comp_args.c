@@ -101,6 +101,28 @@ int comp_typed_pin(int comp_id, char t, hal_pin_dir_t dir, void **ptr, const cha
     return hal_pin_new(name, types[(unsigned char)t], dir, ptr, comp_id);
 }
 
+/* Creates the pins listed in defs as <prefix><suffix>, storing each pointer in inst at its offset
+ * and the pin's start value; returns 0 or the first HAL error. */
+int comp_pin_table(int comp_id, void *inst, const comp_pin_def_t *defs, int n, const char *prefix)
+{
+    char name[HAL_NAME_LEN + 1];
+    for (int i = 0; i < n; i++) {
+        void **ptr = (void **)((char *)inst + defs[i].offset);
+        rtapi_snprintf(name, sizeof(name), "%s%s", prefix, defs[i].suffix);
+        int r = hal_pin_new(name, defs[i].type, defs[i].dir, ptr, comp_id);
+        if (r)
+            return r;
+        switch (defs[i].type) {
+        case HAL_BIT: *(hal_bit_t *)*ptr = defs[i].start != 0; break;
+        case HAL_FLOAT: *(hal_float_t *)*ptr = defs[i].start; break;
+        case HAL_S32: *(hal_s32_t *)*ptr = (hal_s32_t)defs[i].start; break;
+        case HAL_U32: *(hal_u32_t *)*ptr = (hal_u32_t)defs[i].start; break;
+        default: break;
+        }
+    }
+    return 0;
+}
+
 /* Number of leading non-empty strings in a string-array module argument. */
 int comp_count_args(char *const args[], int max)
 {
@@ -194,6 +216,62 @@ int comp_setup(const char *name, int count, comp_make_fn make)
     if (comp_args_id < 0) return comp_args_id;
     for (int i = 0; i < count && r == 0; i++)
         r = make(comp_args_id, i);
+    if (r) {
+        hal_exit(comp_args_id);
+        return r;
+    }
+    hal_ready(comp_args_id);
+    return 0;
+}
+
+/* Instances of a count=/names= module (halcompile's rules): each name, or count (default when 0)
+ * prefixes <prefix_base>.<i>. Bad combinations and names are logged; returns 0 or -EINVAL. */
+static int make_named(int comp_id, const char *prefix_base, int count, const char *names,
+                      int default_count, comp_named_make_fn make)
+{
+    char buf[HAL_NAME_LEN + 1];
+    int r = 0, i = 0;
+    if (count && names && names[0]) {
+        rtapi_print_msg(RTAPI_MSG_ERR, "count= and names= are mutually exclusive\n");
+        return -EINVAL;
+    }
+    if (count < 0) {
+        rtapi_print_msg(RTAPI_MSG_ERR, "count=%d: the count must not be negative\n", count);
+        return -EINVAL;
+    }
+    if (!names || !names[0]) {
+        for (i = 0; i < (count ? count : default_count) && r == 0; i++) {
+            rtapi_snprintf(buf, sizeof(buf), "%s.%d", prefix_base, i);
+            r = make(comp_id, i, buf);
+        }
+        return r;
+    }
+    for (const char *p = names; r == 0; i++) {
+        const char *end = strchr(p, ',');
+        size_t len = end ? (size_t)(end - p) : strlen(p);
+        if (len > HAL_NAME_LEN) {
+            rtapi_print_msg(RTAPI_MSG_ERR, "names: \"%.*s\" too long\n", (int)len, p);
+            return -EINVAL;
+        }
+        memcpy(buf, p, len);
+        buf[len] = '\0';
+        r = comp_name_check(prefix_base, i, buf);
+        if (r == 0)
+            r = make(comp_id, i, buf);
+        if (!end)
+            break;
+        p = end + 1;
+    }
+    return r;
+}
+
+/* hal_init comp, make its count=/names= instances, then hal_ready; exit HAL on failure. */
+int comp_setup_named(const char *comp, const char *prefix_base, int count, const char *names,
+                     int default_count, comp_named_make_fn make)
+{
+    comp_args_id = hal_init(comp);
+    if (comp_args_id < 0) return comp_args_id;
+    int r = make_named(comp_args_id, prefix_base, count, names, default_count, make);
     if (r) {
         hal_exit(comp_args_id);
         return r;

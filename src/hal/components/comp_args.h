@@ -28,8 +28,20 @@ typedef struct {
     int default_chan;   /* channels when neither argument is given (or num_chan=0) */
 } comp_chan_spec_t;
 
+/* One pin of a table-driven module: name suffix, type, direction, where its pointer lives
+ * (offset in the instance struct) and the value it starts with. */
+typedef struct {
+    const char *suffix;
+    hal_type_t type;
+    hal_pin_dir_t dir;
+    size_t offset;
+    double start;
+} comp_pin_def_t;
+
 /* Creates the pins and funct of instance i; returns 0 or a negative errno. */
 typedef int (*comp_make_fn)(int comp_id, int i);
+/* Creates the pins and funct of instance i named prefix; returns 0 or a negative errno. */
+typedef int (*comp_named_make_fn)(int comp_id, int i, const char *prefix);
 
 /* Value of type letter t as a double. */
 static inline double comp_value_read(const comp_value_t *v, char t)
@@ -129,6 +141,9 @@ int comp_names_count(const char *who, char *const names[], int max);
 int comp_chan_count(const comp_chan_spec_t *spec, int num_chan, char *const names[]);
 void comp_chan_name(const comp_chan_spec_t *spec, char *const names[], int i, char *buf, size_t len);
 int comp_setup(const char *name, int count, comp_make_fn make);
+int comp_pin_table(int comp_id, void *inst, const comp_pin_def_t *defs, int n, const char *prefix);
+int comp_setup_named(const char *comp, const char *prefix_base, int count, const char *names,
+                     int default_count, comp_named_make_fn make);
 void comp_teardown(void);
 
 #endif
