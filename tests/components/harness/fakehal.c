@@ -121,6 +121,13 @@ static int new_param(hal_type_t t, int dir, void *data, int id, const char *fmt,
         va_end(ap); return r; \
     }
 
+/* hal_pin_<type>_new(name, dir, ptr, id): the plain-name forms. */
+#define FAKE_PIN_NEW(tn, T, ctype) \
+    int hal_pin_##tn##_new(const char *name, hal_pin_dir_t dir, ctype **p, int id) \
+    { \
+        return hal_pin_new(name, T, dir, (void **)p, id); \
+    }
+
 FAKE_PIN_NEWF(bit, HAL_BIT, hal_bit_t)
 FAKE_PIN_NEWF(float, HAL_FLOAT, hal_float_t)
 FAKE_PIN_NEWF(s32, HAL_S32, hal_s32_t)
@@ -134,6 +141,12 @@ FAKE_PARAM_NEWF(s32, HAL_S32, hal_s32_t)
 FAKE_PARAM_NEWF(u32, HAL_U32, hal_u32_t)
 FAKE_PARAM_NEWF(s64, HAL_S64, hal_s64_t)
 FAKE_PARAM_NEWF(u64, HAL_U64, hal_u64_t)
+FAKE_PIN_NEW(bit, HAL_BIT, hal_bit_t)
+FAKE_PIN_NEW(float, HAL_FLOAT, hal_float_t)
+FAKE_PIN_NEW(s32, HAL_S32, hal_s32_t)
+FAKE_PIN_NEW(u32, HAL_U32, hal_u32_t)
+FAKE_PIN_NEW(s64, HAL_S64, hal_s64_t)
+FAKE_PIN_NEW(u64, HAL_U64, hal_u64_t)
 
 /* Register a funct plus its .time pin and .tmax/.tmax-increased params. */
 int hal_export_funct(const char *name, void (*funct)(void *, long), void *arg,
