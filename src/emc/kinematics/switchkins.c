@@ -39,14 +39,19 @@ static int native_active(void)
 int kinematicsForward(const double *joint, EmcPose *world,
                       const KINEMATICS_FORWARD_FLAGS *fflags, KINEMATICS_INVERSE_FLAGS *iflags)
 {
+    int r = 0;
     (void)fflags;
     (void)iflags;
-    if (native_active())
-        return switchkins_def.native_forward(joint, world);
-    if (active_type == 2)
-        *pins->userk_fct += 1;
-    kins_identity_forward(&coords, joint, world);
-    return 0;
+    if (native_active()) {
+        r = switchkins_def.native_forward(joint, world);
+    } else {
+        if (active_type == 2)
+            *pins->userk_fct += 1;
+        kins_identity_forward(&coords, joint, world);
+    }
+    if (r == 0 && switchkins_def.after_forward)
+        r = switchkins_def.after_forward(joint);
+    return r;
 }
 
 /* World -> joints through the active kinematics. */
@@ -75,6 +80,8 @@ static void switched(int new_type)
     active_type = new_type;
     for (int i = 0; i < 3; i++)
         *pins->is_type[i] = (i == new_type);
+    if (switchkins_def.on_switch)
+        switchkins_def.on_switch(new_type);
 }
 
 /* Create kinstype.is-0/1/2 and userk.fct/ict. */

@@ -19,6 +19,11 @@ typedef struct switchkins_def {
     switchkins_fwd_fn native_forward;
     switchkins_inv_fn native_inverse;
     int identity_first_allowed;      /* sparm=identityfirst swaps types 0 and 1 */
+    /* Optional: runs after every successful forward of any type (genhexkins' skgui pins); its
+     * non-zero result is returned by kinematicsForward. */
+    int (*after_forward)(const double *joints);
+    /* Optional: told each time a type is selected (also the type 0 selected at load). */
+    void (*on_switch)(int new_type);
 } switchkins_def_t;
 
 /* Each switchable module defines exactly one of these. */

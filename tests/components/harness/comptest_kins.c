@@ -18,14 +18,24 @@ static const kins_ops_t *kins_table(void *module)
     return ops;
 }
 
+/* The pose kfwd passes in (iterative kinematics start from it); kguess sets it, 0 by default. */
+static EmcPose kfwd_guess;
+
+/* kguess X Y Z A B C U V W: the pose given to the following kfwd calls. */
+static void cmd_kguess(int argc, char **argv)
+{
+    memset(&kfwd_guess, 0, sizeof(kfwd_guess));
+    for (int a = 0; a < KINS_AXES && a + 1 < argc; a++)
+        kins_pose_set(&kfwd_guess, a, strtod(argv[a + 1], NULL));
+}
+
 /* kfwd J0 J1 ...: forward kinematics from the given joints (others 0); prints rc and the pose. */
 static void cmd_kfwd(const kins_ops_t *ops, int argc, char **argv)
 {
     double joints[KINS_MAX_JOINTS] = {0};
-    EmcPose pos;
+    EmcPose pos = kfwd_guess;
     KINEMATICS_FORWARD_FLAGS ff = 0;
     KINEMATICS_INVERSE_FLAGS fi = 0;
-    memset(&pos, 0, sizeof(pos));
     for (int i = 1; i < argc && i <= KINS_MAX_JOINTS; i++)
         joints[i - 1] = strtod(argv[i], NULL);
     int rc = ops->forward(joints, &pos, &ff, &fi);
@@ -59,6 +69,10 @@ static void cmd_kinv(const kins_ops_t *ops, int argc, char **argv)
 int comptest_kins_dispatch(void *module, int argc, char **argv)
 {
     const char *c = argv[0];
+    if (!strcmp(c, "kguess")) {
+        cmd_kguess(argc, argv);
+        return 1;
+    }
     if (strcmp(c, "kfwd") && strcmp(c, "kinv") && strcmp(c, "ktype") && strcmp(c, "kswitch"))
         return 0;
     const kins_ops_t *ops = kins_table(module);

@@ -60,5 +60,5 @@ static int inverse(const EmcPose *pos, double *joints)
 }
 
 const switchkins_def_t switchkins_def = {
-    FIVEAXIS_NAME, FIVEAXIS_AXES, KINEMATICS_BOTH, setup, forward, inverse, 0
+    FIVEAXIS_NAME, FIVEAXIS_AXES, KINEMATICS_BOTH, setup, forward, inverse, 0, NULL, NULL,
 };

@@ -9,5 +9,5 @@ MODULE_DESCRIPTION("Switchable kinematics for a trunnion table: tilt A (about X)
 const trtkins_variant_t trtkins_variant = {"xyzac-trt-kins", "XYZAC", ROT_X, 3};
 
 const switchkins_def_t switchkins_def = {
-    "xyzac-trt-kins", "XYZAC", KINEMATICS_BOTH, trtkins_setup, trtkins_forward, trtkins_inverse, 1
+    "xyzac-trt-kins", "XYZAC", KINEMATICS_BOTH, trtkins_setup, trtkins_forward, trtkins_inverse, 1, NULL, NULL,
 };

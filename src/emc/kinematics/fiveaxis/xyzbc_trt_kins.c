@@ -9,5 +9,5 @@ MODULE_DESCRIPTION("Switchable kinematics for a trunnion table: tilt B (about Y)
 const trtkins_variant_t trtkins_variant = {"xyzbc-trt-kins", "XYZBC", ROT_Y, 4};
 
 const switchkins_def_t switchkins_def = {
-    "xyzbc-trt-kins", "XYZBC", KINEMATICS_BOTH, trtkins_setup, trtkins_forward, trtkins_inverse, 1
+    "xyzbc-trt-kins", "XYZBC", KINEMATICS_BOTH, trtkins_setup, trtkins_forward, trtkins_inverse, 1, NULL, NULL,
 };

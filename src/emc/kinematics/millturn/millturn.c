@@ -58,5 +58,5 @@ static int millturn_setup(int comp_id, const char *sparm)
 
 /* What the switchable frame needs: name, identity map, type, setup and the two directions. */
 const switchkins_def_t switchkins_def = {
-    "millturn", "XYZC", KINEMATICS_BOTH, millturn_setup, millturn_fwd, millturn_inv, 0,
+    "millturn", "XYZC", KINEMATICS_BOTH, millturn_setup, millturn_fwd, millturn_inv, 0, NULL, NULL,
 };

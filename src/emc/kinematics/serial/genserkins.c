@@ -127,5 +127,5 @@ static int genser_setup(int comp_id, const char *sparm)
 }
 
 const switchkins_def_t switchkins_def = {
-    "genserkins", "XYZABC", KINEMATICS_BOTH, genser_setup, genser_fwd, genser_inv, 0,
+    "genserkins", "XYZABC", KINEMATICS_BOTH, genser_setup, genser_fwd, genser_inv, 0, NULL, NULL,
 };

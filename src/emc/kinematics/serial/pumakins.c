@@ -18,5 +18,5 @@ const arm6_module_t arm6_module = {"pumakins", puma_pin_defs, puma_members,
 
 const switchkins_def_t switchkins_def = {
     "pumakins", "XYZABC", KINEMATICS_BOTH, arm6_module_setup, arm6_module_forward,
-    arm6_module_inverse, 0,
+    arm6_module_inverse, 0, NULL, NULL,
 };

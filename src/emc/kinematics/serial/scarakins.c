@@ -51,5 +51,5 @@ static int scara_setup(int comp_id, const char *sparm)
 }
 
 const switchkins_def_t switchkins_def = {
-    "scarakins", "XYZCAB", KINEMATICS_BOTH, scara_setup, scara_fwd, scara_inv, 0,
+    "scarakins", "XYZCAB", KINEMATICS_BOTH, scara_setup, scara_fwd, scara_inv, 0, NULL, NULL,
 };

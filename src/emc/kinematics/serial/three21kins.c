@@ -20,5 +20,5 @@ const arm6_module_t arm6_module = {"three21kins", t21_pin_defs, t21_members,
 
 const switchkins_def_t switchkins_def = {
     "three21kins", "XYZABC", KINEMATICS_BOTH, arm6_module_setup, arm6_module_forward,
-    arm6_module_inverse, 0,
+    arm6_module_inverse, 0, NULL, NULL,
 };
