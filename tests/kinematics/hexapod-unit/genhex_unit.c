@@ -159,6 +159,13 @@ static void refused(void)
     r = genhex_forward(&g, len, &q, &s);
     check(r == GENHEX_NO_CONVERGENCE, "limit-iterations 1 stops the solver (-5)");
     q = pose6(0, 0, 20, 0, 0, 0);
+    s.limit_iterations = 5000;
+    s.conv_criterion = -1;
+    r = genhex_forward(&g, len, &q, &s);
+    check(r == GENHEX_NO_CONVERGENCE && s.iterations == GENHEX_MAX_ITERATIONS + 1,
+          "limit-iterations 5000 still stops after 1000 steps (bounded cycle time)");
+    s.conv_criterion = 1e-9;
+    q = pose6(0, 0, 20, 0, 0, 0);
     s.limit_iterations = 120;
     s.max_error = 0.5;
     r = genhex_forward(&g, len, &q, &s);
