@@ -126,6 +126,6 @@ int rtapi_app_main(void)
     }
     identity_first = switchkins_def.identity_first_allowed && sparm &&
                      !strcmp(sparm, "identityfirst");
-    kins_entry_t entry = {switchkins_def.name, switchkins_build, 2, switched};
+    kins_entry_t entry = {switchkins_def.name, switchkins_build, 2, switched, 0};
     return kins_entry_start(&entry);
 }

@@ -226,8 +226,8 @@ int comp_setup(const char *name, int count, comp_make_fn make)
 
 /* Instances of a count=/names= module (halcompile's rules): each name, or count (default when 0)
  * prefixes <prefix_base>.<i>. Bad combinations and names are logged; returns 0 or -EINVAL. */
-static int make_named(int comp_id, const char *prefix_base, int count, const char *names,
-                      int default_count, comp_named_make_fn make)
+int comp_make_named(int comp_id, const char *prefix_base, int count, const char *names,
+                    int default_count, comp_named_make_fn make)
 {
     char buf[HAL_NAME_LEN + 1];
     int r = 0, i = 0;
@@ -271,7 +271,7 @@ int comp_setup_named(const char *comp, const char *prefix_base, int count, const
 {
     comp_args_id = hal_init(comp);
     if (comp_args_id < 0) return comp_args_id;
-    int r = make_named(comp_args_id, prefix_base, count, names, default_count, make);
+    int r = comp_make_named(comp_args_id, prefix_base, count, names, default_count, make);
     if (r) {
         hal_exit(comp_args_id);
         return r;

@@ -142,6 +142,8 @@ int comp_chan_count(const comp_chan_spec_t *spec, int num_chan, char *const name
 void comp_chan_name(const comp_chan_spec_t *spec, char *const names[], int i, char *buf, size_t len);
 int comp_setup(const char *name, int count, comp_make_fn make);
 int comp_pin_table(int comp_id, void *inst, const comp_pin_def_t *defs, int n, const char *prefix);
+int comp_make_named(int comp_id, const char *prefix_base, int count, const char *names,
+                    int default_count, comp_named_make_fn make);
 int comp_setup_named(const char *comp, const char *prefix_base, int count, const char *names,
                      int default_count, comp_named_make_fn make);
 void comp_teardown(void);

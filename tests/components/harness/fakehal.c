@@ -183,6 +183,9 @@ int hal_init(const char *name)
 /* Mark the component ready. */
 int hal_ready(int comp_id) { (void)comp_id; comp_ready = 1; return 0; }
 
+/* Mark the component not ready again (kinematics that add pins at their first type query). */
+int hal_unready(int comp_id) { (void)comp_id; comp_ready = 0; return 0; }
+
 /* Record that the component was removed and drop its pins, params and functs. */
 int hal_exit(int comp_id)
 {
