@@ -41,8 +41,9 @@ int kinematicsForward(const double *joint, EmcPose *world,
 {
     int r = 0;
     (void)fflags;
-    (void)iflags;
-    if (native_active()) {
+    if (native_active() && switchkins_def.native_forward_flags) {
+        r = switchkins_def.native_forward_flags(joint, world, iflags);
+    } else if (native_active()) {
         r = switchkins_def.native_forward(joint, world);
     } else {
         if (active_type == 2)
@@ -58,8 +59,8 @@ int kinematicsForward(const double *joint, EmcPose *world,
 int kinematicsInverse(const EmcPose *world, double *joint,
                       const KINEMATICS_INVERSE_FLAGS *iflags, KINEMATICS_FORWARD_FLAGS *fflags)
 {
-    (void)iflags;
-    (void)fflags;
+    if (native_active() && switchkins_def.native_inverse_flags)
+        return switchkins_def.native_inverse_flags(world, joint, iflags, fflags);
     if (native_active())
         return switchkins_def.native_inverse(world, joint);
     if (active_type == 2)

@@ -196,6 +196,7 @@ static int genhex_setup(int comp_id, const char *sparm)
 
 /* What the switchable frame needs: name, identity map, type, setup, the two directions, the GUI pose. */
 const switchkins_def_t switchkins_def = {
-    "genhexkins", "XYZABC", KINEMATICS_BOTH, genhex_setup, genhex_fwd, genhex_inv, 0,
-    genhex_gui, genhex_switched,
+    .name = "genhexkins", .default_coordinates = "XYZABC", .native_type = KINEMATICS_BOTH,
+    .setup = genhex_setup, .native_forward = genhex_fwd, .native_inverse = genhex_inv,
+    .after_forward = genhex_gui, .on_switch = genhex_switched,
 };
