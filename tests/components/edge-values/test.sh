@@ -159,15 +159,15 @@ echo "scaled_s32_sums: a sum beyond s32 saturates"
 run <<'S'
 load scaled_s32_sums
 functs scaled-s32-sums.0
-set scaled-s32-sums.0.input0 2000000000
+set scaled-s32-sums.0.in0 2000000000
 set scaled-s32-sums.0.scale0 2
 cycle 1
-get scaled-s32-sums.0.output
+get scaled-s32-sums.0.out-s
 set scaled-s32-sums.0.scale0 -2
 cycle 1
-get scaled-s32-sums.0.output
+get scaled-s32-sums.0.out-s
 S
-echo "xhc_hb04_util: an inf scale leaves the filter output where it was"
+echo "xhc_hb04_util: an inf scale saturates the output and leaves the filter unharmed"
 run <<'S'
 load xhc_hb04_util
 functs xhc-hb04-util.0
@@ -216,15 +216,16 @@ set mux16.0.in00 nan
 cycle 1
 get mux16.0.out-s
 S
-echo "safety_latch: NaN is out of range and latches"
+echo "safety_latch: harm past the s32 range saturates the count instead of wrapping"
 run <<'S'
 load safety_latch
 functs safety-latch.0
-set safety-latch.0.min-value -1
-set safety-latch.0.max-value 1
-set safety-latch.0.error-value nan
-cycle 1
-get safety-latch.0.ok safety-latch.0.error
+set safety-latch.0.max 2147483647
+set safety-latch.0.threshold 2147483647
+set safety-latch.0.harm 2147483647
+set safety-latch.0.error-in 1
+cycle 2
+get safety-latch.0.count safety-latch.0.ok-out safety-latch.0.error-out
 S
 echo "demux_generic: NaN to an s32 output is 0, a huge float saturates"
 run <<'S'

@@ -104,6 +104,7 @@ static void cmd_load(int argc, char **argv)
     for (int i = 2; i < argc; i++)
         if (set_modparam(argv[i]) < 0)
             return;
+    fake_new_load();
     int (*app_main)(void) = (int (*)(void))dlsym(module, "rtapi_app_main");
     int r = app_main ? app_main() : -1;
     printf("rtapi_app_main: %d%s%s\n", r, fake_ready() ? " ready" : "",
@@ -235,6 +236,8 @@ static void dispatch(int argc, char **argv)
         void (*app_exit)(void) = (void (*)(void))dlsym(module, "rtapi_app_exit");
         if (app_exit) app_exit();
         printf("rtapi_app_exit:%s\n", fake_exited() ? " exited" : "");
+        dlclose(module);  /* the next load starts from fresh module variables */
+        module = NULL;
     } else if (!comptest_kins_dispatch(module, argc, argv) && !comptest_home_dispatch(module, argc, argv))
         printf("unknown command '%s'\n", c);
 }

@@ -54,6 +54,13 @@ int fake_ready(void) { return comp_ready; }
 /* Whether hal_exit was called. */
 int fake_exited(void) { return comp_exited; }
 
+/* A module is about to be loaded: nothing is ready or exited yet. */
+void fake_new_load(void)
+{
+    comp_ready = 0;
+    comp_exited = 0;
+}
+
 /* Register a new item; returns it or NULL on duplicates/overflow. */
 static fake_item_t *add_item(const char *name, fake_kind_t kind, int comp_id)
 {
