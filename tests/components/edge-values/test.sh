@@ -191,16 +191,19 @@ set wsum.0.bit.0.in 1
 cycle 1
 get wsum.0.sum
 S
-echo "laserpower: a NaN current velocity turns the laser off"
+echo "laserpower: a NaN current velocity scales to 0 (power = min-power)"
 run <<'S'
 load laserpower
 functs laserpower.0
-set laserpower.0.enable 1
-set laserpower.0.req-power 50
-set laserpower.0.req-vel 100
-set laserpower.0.cur-vel nan
+set laserpower.0.enabled 1
+set laserpower.0.raster-mode 1
+set laserpower.0.raster-power 50
+set laserpower.0.max-power 100
+set laserpower.0.min-power 2
+set laserpower.0.req-velocity 100
+set laserpower.0.cur-velocity nan
 cycle 1
-get laserpower.0.output
+get laserpower.0.power laserpower.0.vel-scale
 S
 echo "mux16: out-s saturates beyond s32 and gives 0 for NaN"
 run <<'S'
