@@ -232,11 +232,12 @@ int comp_make_named(int comp_id, const char *prefix_base, int count, const char 
     char buf[HAL_NAME_LEN + 1];
     int r = 0, i = 0;
     if (count && names && names[0]) {
-        rtapi_print_msg(RTAPI_MSG_ERR, "count= and names= are mutually exclusive\n");
+        rtapi_print_msg(RTAPI_MSG_ERR, "%s: ERROR: count= and names= are mutually exclusive\n", prefix_base);
         return -EINVAL;
     }
     if (count < 0) {
-        rtapi_print_msg(RTAPI_MSG_ERR, "count=%d: the count must not be negative\n", count);
+        rtapi_print_msg(RTAPI_MSG_ERR, "%s: ERROR: count=%d: the count must not be negative\n", prefix_base,
+                        count);
         return -EINVAL;
     }
     if (!names || !names[0]) {
@@ -250,7 +251,7 @@ int comp_make_named(int comp_id, const char *prefix_base, int count, const char 
         const char *end = strchr(p, ',');
         size_t len = end ? (size_t)(end - p) : strlen(p);
         if (len > HAL_NAME_LEN) {
-            rtapi_print_msg(RTAPI_MSG_ERR, "names: \"%.*s\" too long\n", (int)len, p);
+            rtapi_print_msg(RTAPI_MSG_ERR, "%s: ERROR: names: \"%.*s\" too long\n", prefix_base, (int)len, p);
             return -EINVAL;
         }
         memcpy(buf, p, len);
