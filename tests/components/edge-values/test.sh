@@ -372,7 +372,7 @@ set thcud.torch-on 0
 cycle 1
 get thcud.z-pos-out thcud.removing-offset
 S
-echo "plasmac: a NaN probe-start-height holds the torch instead of driving it down"
+echo "plasmac: a NaN probe-start-height probes from the current height"
 run <<'S'
 load plasmac
 functs plasmac
@@ -384,6 +384,8 @@ set plasmac.axis-z-position 50
 set plasmac.setup-feed-rate 60000
 set plasmac.probe-feed-rate 600
 set plasmac.probe-start-height nan
+set plasmac.homed 1
+set plasmac.units-per-mm 1
 set plasmac.pierce-height 4
 set plasmac.cut-height 1.5
 set plasmac.mode 1

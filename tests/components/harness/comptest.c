@@ -17,6 +17,9 @@ static size_t n_param_strings;
 extern long long fake_clock_ns;
 int comptest_kins_dispatch(void *module, int argc, char **argv);
 int comptest_home_dispatch(void *module, int argc, char **argv);
+int comptest_follow_dispatch(int argc, char **argv);
+void comptest_follow_apply(void);
+void comptest_follow_clear(void);
 
 /* Copy a string parameter value, remembering it so main can free it at exit. */
 static char *keep_string(const char *value)
@@ -176,6 +179,7 @@ static void one_cycle(void)
     for (int i = 0; i < n_cycle; i++)
         cycle_list[i]->funct(cycle_list[i]->arg, period_ns);
     fake_clock_ns += period_ns;
+    comptest_follow_apply();
 }
 
 /* functs F...: set the list of functs one cycle calls. */
@@ -235,10 +239,12 @@ static void dispatch(int argc, char **argv)
     } else if (!strcmp(c, "unload")) {
         void (*app_exit)(void) = (void (*)(void))dlsym(module, "rtapi_app_exit");
         if (app_exit) app_exit();
+        comptest_follow_clear();
         printf("rtapi_app_exit:%s\n", fake_exited() ? " exited" : "");
         dlclose(module);  /* the next load starts from fresh module variables */
         module = NULL;
-    } else if (!comptest_kins_dispatch(module, argc, argv) && !comptest_home_dispatch(module, argc, argv))
+    } else if (!comptest_kins_dispatch(module, argc, argv) && !comptest_home_dispatch(module, argc, argv)
+               && !comptest_follow_dispatch(argc, argv))
         printf("unknown command '%s'\n", c);
 }
 
