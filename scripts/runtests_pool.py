@@ -10,7 +10,9 @@ import sys
 import tempfile
 
 SHM_KEYS = ((0x00000064, "Emc motion"), (0x48414C32, "Hal"), (0x48484C34, "UUID"),
-            (0x90280A48, "Rtapi"), (0x130CF406, "Hal scope"), (0x434C522B, "Classicladder"))
+            (0x90280A48, "Rtapi"), (0x130CF406, "Hal scope"), (0x434C522B, "Classicladder"),
+            (1001, "NML emcCommand"), (1002, "NML emcStatus"), (1003, "NML emcError"),
+            (0x00544F4C, "Tool data"))
 SHARED_LOCKDIR = "openemc-instance-locks"
 FIFO_NAME = re.compile(r"/\.rtapi_fifo(?:\.(\d+))?$")
 

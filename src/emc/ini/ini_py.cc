@@ -193,7 +193,7 @@ PyType_Slot ini_slots[] = {
     {0, nullptr},
 };
 
-PyType_Spec ini_spec = {"_linuxcnc_ini.ini", sizeof(PyIni), 0, Py_TPFLAGS_DEFAULT, ini_slots};
+PyType_Spec ini_spec = {"linuxcnc.ini", sizeof(PyIni), 0, Py_TPFLAGS_DEFAULT, ini_slots};
 
 PyModuleDef ini_module = {PyModuleDef_HEAD_INIT, "_linuxcnc_ini",
                           "INI file access (the ini type of the linuxcnc module)", -1,
@@ -217,7 +217,7 @@ PyMODINIT_FUNC PyInit__linuxcnc_ini(void)
     PyObject *module = PyModule_Create(&ini_module);
     if (!module) return nullptr;
     PyObject *type = PyType_FromSpec(&ini_spec);
-    ini_py_error = PyErr_NewException("_linuxcnc_ini.error", PyExc_RuntimeError, nullptr);
+    ini_py_error = PyErr_NewException("linuxcnc.error", PyExc_RuntimeError, nullptr);
     if (!type || !ini_py_error || PyModule_AddObjectRef(module, "error", ini_py_error) < 0 ||
         PyModule_AddObjectRef(module, "ini", type) < 0) {
         Py_XDECREF(type);

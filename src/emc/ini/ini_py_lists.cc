@@ -58,13 +58,13 @@ PyObject *ini_py_getvariables(PyIni *self, PyObject *args)
     return list;
 }
 
-// findall(sec[, var]) -> [value, ...]; var omitted = every value of the section.
+// findall(sec[, var]) -> [value, ...]; var omitted or "" = every value of the section.
 PyObject *ini_py_findall(PyIni *self, PyObject *args)
 {
     const char *sec = nullptr, *var = nullptr;
     const IniFile *ini = ini_py_file(self);
     if (!ini || !PyArg_ParseTuple(args, "s|s", &sec, &var)) return nullptr;
-    if (var) return str_list(ini->FindAll(var, sec));
+    if (var && *var) return str_list(ini->FindAll(var, sec));
     std::vector<std::string> values;
     if (*sec && !ini->HasSection(sec)) return str_list(values);
     for (const auto &kv : ini->Variables(sec)) values.push_back(kv.second);

@@ -56,7 +56,7 @@ idle and the port empty (run does not start a program then).
 #define RASTER_EPS 1e-4
 
 /* Peek up to max bytes of the next header field; the field's length before ';' or -1 without one. */
-static int peek_field(hal_port_t port, char *buf, int max, int *got)
+static int peek_field(const hal_port_t *port, char *buf, int max, int *got)
 {
     unsigned avail = hal_port_readable(port);
     int n = avail < (unsigned)max ? (int)avail : max;
@@ -69,7 +69,7 @@ static int peek_field(hal_port_t port, char *buf, int max, int *got)
 }
 
 /* Read a float header field; 0 or -1. */
-static int read_float(hal_port_t port, double *v)
+static int read_float(const hal_port_t *port, double *v)
 {
     char buf[RASTER_FLOAT_PEEK];
     int got, len;
@@ -80,7 +80,7 @@ static int read_float(hal_port_t port, double *v)
 }
 
 /* Read an integer header field; 0 or -1. */
-static int read_int(hal_port_t port, long *v)
+static int read_int(const hal_port_t *port, long *v)
 {
     char buf[RASTER_INT_PEEK];
     int got, len;

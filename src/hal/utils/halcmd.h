@@ -8,6 +8,7 @@
 #define HC_MAX_TOKENS 32
 #define HC_LINE_MAX 2048
 #define HC_VARNAME_MAX 127
+#define HC_PHYS_LINE_MAX (1024 * 1024)  /* longest physical line read from a file */
 
 /* Global options and state of one halcmd run. */
 typedef struct {
@@ -23,6 +24,9 @@ typedef struct {
     const char *ini_file;  /* -i */
     int comp_id;           /* halcmd's own component id */
     char progname[64];     /* halcmd<pid> */
+    FILE *out;             /* command output (NULL = stdout); haltcl captures it */
+    FILE *err;             /* error and warning text (NULL = stderr); haltcl captures it */
+    int bare_messages;     /* messages without the "file:line: " prefix (haltcl's hal command) */
 } halcmd_state_t;
 
 extern halcmd_state_t hc;
@@ -32,6 +36,11 @@ void hc_error(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
 void hc_warning(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
 void hc_info(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
 void hc_out(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
+/* Output that -Q does not silence (getp, ptype, help, echo). */
+void hc_print(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
+/* The streams commands write to: stdout/stderr unless haltcl redirected them. */
+FILE *hc_stdout(void);
+FILE *hc_stderr(void);
 
 /* Line processing (halcmd_parse.c). */
 int hc_strip_comment(char *line);
@@ -40,6 +49,8 @@ int hc_tokenize(char *line, char *tokens[], int *ntokens);
 
 /* INI lookup (halcmd_ini.c); returns malloc'd value or NULL. */
 char *hc_ini_lookup(const char *file, const char *section, const char *key);
+/* "LIB:name" -> $HALLIB_DIR/name (in buf); any other name is returned as it is. */
+const char *hc_resolve_lib(const char *name, char *buf, size_t size);
 
 /* One full source line through steps 2-10; returns 0 or -1. */
 int hc_process_line(char *line);
@@ -47,6 +58,15 @@ int hc_process_line(char *line);
 int hc_run_tokens(int argc, char *argv[]);
 /* Run lines from a stream; continuation enables backslash joining. */
 int hc_run_stream(FILE *f, int continuation, int interactive);
+/* Open a HAL file; NULL with errno set, EISDIR for a directory. */
+FILE *hc_open_hal_file(const char *name);
+/* A growing NUL-terminated text (zero-initialise; free text when done). */
+typedef struct {
+    char *text;
+    size_t len, cap;
+} hc_text_t;
+/* Append n bytes of s; -1 (reported) when out of memory. */
+int hc_text_append(hc_text_t *t, const char *s, size_t n);
 /* Interactive readline loop (halcmd_interactive.c). */
 int hc_run_interactive(void);
 

@@ -31,25 +31,22 @@ static void hc_save_comps(FILE *out)
     }
 }
 
-/* Print one alias command if aliased, with the section header before the first. */
-static void hc_save_alias(FILE *out, const char *kind, int *first, int oldname, const char *name)
+/* Print one alias command if aliased. */
+static void hc_save_alias(FILE *out, const char *kind, int oldname, const char *name)
 {
-    if (!oldname)
-        return;
-    if (*first)
-        fprintf(out, "# %s aliases\n", kind);
-    *first = 0;
-    fprintf(out, "alias %s %s %s\n", kind, halpr_original_name(oldname), name);
+    if (oldname)
+        fprintf(out, "alias %s %s %s\n", kind, halpr_original_name(oldname), name);
 }
 
-/* Print alias commands for aliased pins and params. */
+/* Print the pin and param alias sections (headers always, as LinuxCNC does). */
 static void hc_save_aliases(FILE *out)
 {
-    int first_pin = 1, first_param = 1;
+    fprintf(out, "# pin aliases\n");
     for (hal_pin_t *p = halpr_first_pin(); p; p = halpr_next_pin(p))
-        hc_save_alias(out, "pin", &first_pin, p->oldname, p->name);
+        hc_save_alias(out, "pin", p->oldname, p->name);
+    fprintf(out, "# param aliases\n");
     for (hal_param_t *p = halpr_first_param(); p; p = halpr_next_param(p))
-        hc_save_alias(out, "param", &first_param, p->oldname, p->name);
+        hc_save_alias(out, "param", p->oldname, p->name);
 }
 
 /* Print newsig lines (all signals, or only pinless ones). */
@@ -199,7 +196,7 @@ static FILE *hc_save_open(int argc, char *argv[], char *tmp, size_t size)
         snprintf(tmp, size, "%s.tmp%d", argv[1], (int)getpid());
         return fopen(tmp, "w");
     }
-    return hc.quiet ? fopen("/dev/null", "w") : stdout;
+    return hc.quiet ? fopen("/dev/null", "w") : hc_stdout();
 }
 
 /* save [type [file]]: to stdout, or atomically replacing file. */
@@ -216,9 +213,9 @@ int hc_cmd_save(int argc, char *argv[])
     halpr_mutex_get();
     rc = hc_save_type(type, out);
     halpr_mutex_give();
-    if (out != stdout)
+    if (out != hc_stdout())
         write_failed = fclose(out) != 0;
-    fflush(stdout);
+    fflush(hc_stdout());
     if (rc < 0)
         hc_error("Unknown 'save' type '%s'", type);
     if (argc > 1 && (rc < 0 || write_failed || rename(tmp, argv[1]) < 0)) {
