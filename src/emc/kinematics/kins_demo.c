@@ -3,7 +3,12 @@
 #include "hal.h"
 #include "kins_demo.h"
 
-static hal_u32_t *echo_in, *echo_out;
+/* The echo pins (their pointers live in HAL memory, as HAL requires). */
+typedef struct {
+    hal_u32_t *in, *out;
+} kins_demo_echo_t;
+
+static kins_demo_echo_t *echo;
 static int inverse_seen, warned;
 
 /* Funct <prefix>.fdemo: announce itself once, then count its calls on fpin. */
@@ -34,22 +39,29 @@ int kins_demo_instance(int comp_id, int i, const char *prefix)
 /* Pins <module>.in (u32 IN) and <module>.out (u32 OUT). */
 int kins_demo_echo_pins(int comp_id, const char *module)
 {
-    int r = hal_pin_u32_newf(HAL_IN, &echo_in, comp_id, "%s.in", module);
-    return r ? r : hal_pin_u32_newf(HAL_OUT, &echo_out, comp_id, "%s.out", module);
+    kins_demo_echo_t *e = hal_malloc(sizeof(*e));
+    if (!e)
+        return -ENOMEM;
+    int r = hal_pin_u32_newf(HAL_IN, &e->in, comp_id, "%s.in", module);
+    if (r == 0)
+        r = hal_pin_u32_newf(HAL_OUT, &e->out, comp_id, "%s.out", module);
+    if (r == 0)
+        echo = e;
+    return r;
 }
 
 /* Inverse side: copy in to out. */
 void kins_demo_echo_inverse(void)
 {
     inverse_seen = 1;
-    if (echo_in && echo_out)
-        *echo_out = *echo_in;
+    if (echo)
+        *echo->out = *echo->in;
 }
 
 /* Forward side: say once that in is not echoed while no inverse has run. */
 void kins_demo_echo_forward(const char *module)
 {
-    if (echo_in && *echo_in && !inverse_seen && !warned) {
+    if (echo && *echo->in && !inverse_seen && !warned) {
         rtapi_print_msg(RTAPI_MSG_INFO, "%s the 'in' pin not echoed until Inverse called\n", module);
         warned = 1;
     }

@@ -83,11 +83,25 @@ static fake_item_t *add_item(const char *name, fake_kind_t kind, int comp_id)
     return it;
 }
 
+/* TRUE when [p, p + n) lies in one hal_malloc block (real HAL refuses pin and param storage elsewhere). */
+static int in_hal_memory(const void *p, size_t n);
+
+/* The real HAL's refusal of storage outside HAL memory. */
+static int outside_hal_memory(const char *name, const void *p, size_t n)
+{
+    if (in_hal_memory(p, n))
+        return 0;
+    printf("fakehal: '%s': data address not in HAL memory\n", name);
+    return 1;
+}
+
 /* Create a pin whose pointer lives at ptr. */
 static int new_pin(hal_type_t t, int dir, void **ptr, int id, const char *fmt, va_list ap)
 {
     char name[256];
     vsnprintf(name, sizeof(name), fmt, ap);
+    if (outside_hal_memory(name, ptr, sizeof(*ptr)))
+        return -22;
     fake_item_t *it = add_item(name, FAKE_PIN, id);
     if (!it)
         return -22;
@@ -104,6 +118,8 @@ static int new_param(hal_type_t t, int dir, void *data, int id, const char *fmt,
 {
     char name[256];
     vsnprintf(name, sizeof(name), fmt, ap);
+    if (outside_hal_memory(name, data, 1))
+        return -22;
     fake_item_t *it = add_item(name, FAKE_PARAM, id);
     if (!it)
         return -22;
@@ -213,6 +229,7 @@ int hal_exit(int comp_id)
 /* One hal_malloc block: kept on a list, as HAL memory lives until HAL goes away. */
 typedef struct fake_block {
     struct fake_block *next;
+    size_t size;
     max_align_t data[];
 } fake_block_t;
 
@@ -225,8 +242,18 @@ void *hal_malloc(long int size)
     if (!b)
         return NULL;
     b->next = blocks;
+    b->size = (size_t)size;
     blocks = b;
     return b->data;
+}
+
+static int in_hal_memory(const void *p, size_t n)
+{
+    const char *c = p;
+    for (fake_block_t *b = blocks; b; b = b->next)
+        if (c >= (const char *)b->data && c + n <= (const char *)b->data + b->size)
+            return 1;
+    return 0;
 }
 
 /* Free every hal_malloc block (when the fake HAL shuts down). */
@@ -315,6 +342,8 @@ size_t rtapi_strlcpy(char *dst, const char *src, size_t size)
 /* Generic pin creation by name and type. */
 int hal_pin_new(const char *name, hal_type_t type, hal_pin_dir_t dir, void **data_ptr_addr, int comp_id)
 {
+    if (outside_hal_memory(name, data_ptr_addr, sizeof(*data_ptr_addr)))
+        return -22;
     fake_item_t *it = add_item(name, FAKE_PIN, comp_id);
     if (!it)
         return -22;
