@@ -25,9 +25,11 @@ remove_shm() {
 
 # master_pids: pids of live rtapi_app processes of this instance
 master_pids() {
-    local d env state
+    local d env state comm
     for d in /proc/[0-9]*; do
-        [ "$(cat "$d/comm" 2>/dev/null)" = rtapi_app ] || continue
+        comm=
+        { read -r comm < "$d/comm"; } 2>/dev/null
+        [ "$comm" = rtapi_app ] || continue
         state=$(sed -n 's/^State:[[:space:]]*\(.\).*/\1/p' "$d/status" 2>/dev/null)
         [ -n "$state" ] && [ "$state" != Z ] || continue
         env=$( (tr "\\0" "\\n" < "$d/environ") 2>/dev/null | sed -n "s/^OPENEMC_INSTANCE=//p")

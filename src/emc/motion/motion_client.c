@@ -11,7 +11,8 @@
 #include "rtapi_instance.h"
 #include "motion_client.h"
 
-#define STATUS_READ_TRIES 1000
+#define STATUS_READ_TRIES 100       /* quick retries before yielding to the writer */
+#define STATUS_READ_WAIT_S 1.0      /* give up (EBUSY) after this long */
 #define POLL_INTERVAL_NS 200000L
 
 struct emcmot_client {
@@ -87,7 +88,14 @@ static int map_segment(emcmot_client_t *c, char *why, size_t why_size)
     c->shm = mem;
     if (c->owner)
         return 0;
-    return emcmot_shm_check(c->shm, ds.shm_segsz, why, why_size);
+    if (emcmot_shm_check(c->shm, ds.shm_segsz, why, why_size) < 0)
+        return -EPROTO;
+    if (__atomic_load_n(&c->shm->header.owner_state, __ATOMIC_ACQUIRE) != EMCMOT_OWNER_RUNNING) {
+        snprintf(why, why_size, "motion shared memory (key 0x%08x) is left from a motion module "
+                 "that has exited", (unsigned)c->key);
+        return -ENOENT;
+    }
+    return 0;
 }
 
 /* Attach to an existing segment. */
@@ -199,12 +207,23 @@ long emcmot_push(emcmot_client_t *c, emcmot_command_t *cmd)
     return emcmot_ring_push(c->shm, cmd);
 }
 
-/* A consistent status copy. */
+/* A consistent status copy; a writer preempted mid-copy is waited for (sleeping), not spun on. */
 int emcmot_read_status(emcmot_client_t *c, emcmot_status_t *out)
 {
-    if (!emcmot_owner_alive(c))
-        return -EPIPE;
-    return emcmot_status_read(c->shm, out, STATUS_READ_TRIES);
+    double deadline = 0.0;
+    struct timespec pause = { 0, 50000L };
+
+    for (;;) {
+        if (!emcmot_owner_alive(c))
+            return -EPIPE;
+        if (emcmot_status_read(c->shm, out, STATUS_READ_TRIES) == 0)
+            return 0;
+        if (deadline == 0.0)
+            deadline = now_s() + STATUS_READ_WAIT_S;
+        else if (now_s() > deadline)
+            return -EBUSY;
+        nanosleep(&pause, NULL);
+    }
 }
 
 /* Oldest operator message. */

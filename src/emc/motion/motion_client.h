@@ -20,7 +20,8 @@ typedef struct emcmot_client emcmot_client_t;
 
 /* Attach to the segment of [EMCMOT]SHMEM_KEY base_key (<= 0: 100) in this process's
  * OPENEMC_INSTANCE.  0, or a negative errno with the reason in why:
- * -ENOENT no segment (motion not loaded), -EPROTO other version/size,
+ * -ENOENT no segment, or one left by an owner that exited (motion not loaded),
+ * -EPROTO other version/size,
  * -EBUSY another live process already holds the producer side. */
 int emcmot_attach(int base_key, int flags, emcmot_client_t **client, char *why, size_t why_size);
 /* Release the producer side (if held), unmap, free; removes a segment whose owner is gone. */

@@ -68,8 +68,13 @@ typedef struct double_member {
 } double_member_t;
 
 #define DM(field, n) { offsetof(emcmot_command_t, field), n, #field }
+#define DE(field, name) { offsetof(emcmot_command_t, field), 1, name }
 static const double_member_t double_members[] = {
-    DM(pos, 9), DM(center, 3), DM(normal, 3), DM(vel, 1), DM(ini_maxvel, 1), DM(acc, 1),
+    DE(pos.tran.x, "pos.x"), DE(pos.tran.y, "pos.y"), DE(pos.tran.z, "pos.z"),
+    DE(pos.a, "pos.a"), DE(pos.b, "pos.b"), DE(pos.c, "pos.c"), DE(pos.u, "pos.u"),
+    DE(pos.v, "pos.v"), DE(pos.w, "pos.w"), DE(center.x, "center.x"), DE(center.y, "center.y"),
+    DE(center.z, "center.z"), DE(normal.x, "normal.x"), DE(normal.y, "normal.y"),
+    DE(normal.z, "normal.z"), DM(vel, 1), DM(ini_maxvel, 1), DM(acc, 1),
     DM(jerk, 1), DM(tolerance, 1), DM(scale, 1), DM(offset, 1), DM(min_limit, 1),
     DM(max_limit, 1), DM(backlash, 1), DM(min_ferror, 1), DM(max_ferror, 1), DM(home, 1),
     DM(home_offset, 1), DM(home_final_vel, 1), DM(home_search_vel, 1), DM(home_latch_vel, 1),
@@ -79,8 +84,11 @@ static const double_member_t double_members[] = {
     DM(max_neg_speed, 1), DM(min_neg_speed, 1), DM(spindle_increment, 1),
     DM(ext_offset_vel, 1), DM(ext_offset_acc, 1), DM(arc_blend_gap_cycles, 1),
     DM(arc_blend_ramp_freq, 1), DM(arc_blend_tangent_kink_ratio, 1),
-    DM(tag.settings, STATE_TAG_SETTINGS),
+    DE(tag.settings[0], "tag.settings[0]"), DE(tag.settings[1], "tag.settings[1]"),
+    DE(tag.settings[2], "tag.settings[2]"), DE(tag.settings[3], "tag.settings[3]"),
+    DE(tag.settings[4], "tag.settings[4]"),
 };
+#undef DE
 #undef DM
 
 /* 0 when every floating-point member (the tag's settings included) is finite. */

@@ -23,6 +23,9 @@ typedef struct {
     const char *ini_file;  /* -i */
     int comp_id;           /* halcmd's own component id */
     char progname[64];     /* halcmd<pid> */
+    FILE *out;             /* command output (NULL = stdout); haltcl captures it */
+    FILE *err;             /* error and warning text (NULL = stderr); haltcl captures it */
+    int bare_messages;     /* messages without the "file:line: " prefix (haltcl's hal command) */
 } halcmd_state_t;
 
 extern halcmd_state_t hc;
@@ -32,6 +35,11 @@ void hc_error(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
 void hc_warning(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
 void hc_info(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
 void hc_out(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
+/* Output that -Q does not silence (getp, ptype, help, echo). */
+void hc_print(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
+/* The streams commands write to: stdout/stderr unless haltcl redirected them. */
+FILE *hc_stdout(void);
+FILE *hc_stderr(void);
 
 /* Line processing (halcmd_parse.c). */
 int hc_strip_comment(char *line);
@@ -40,6 +48,8 @@ int hc_tokenize(char *line, char *tokens[], int *ntokens);
 
 /* INI lookup (halcmd_ini.c); returns malloc'd value or NULL. */
 char *hc_ini_lookup(const char *file, const char *section, const char *key);
+/* "LIB:name" -> $HALLIB_DIR/name (in buf); any other name is returned as it is. */
+const char *hc_resolve_lib(const char *name, char *buf, size_t size);
 
 /* One full source line through steps 2-10; returns 0 or -1. */
 int hc_process_line(char *line);

@@ -1,4 +1,6 @@
 /* halcmd_cmd_load.c: loadrt, unloadrt, unload and the realtime side of loading. */
+#define _GNU_SOURCE
+#include <dlfcn.h>
 #include <errno.h>
 #include <libgen.h>
 #include <limits.h>
@@ -12,19 +14,21 @@
 #include "halcmd_cmds.h"
 #include "halcmd_hal.h"
 
-/* Directory holding this halcmd binary (where rtapi_app lives too). */
+/* The bin/ directory beside the lib/ holding librtapi (where rtapi_app lives), for messages. */
 const char *hc_bindir(void)
 {
     static char dir[PATH_MAX];
-    char exe[PATH_MAX];
-    ssize_t n;
+    char lib[PATH_MAX];
+    Dl_info info;
     if (dir[0])
         return dir;
-    n = readlink("/proc/self/exe", exe, sizeof exe - 1);
-    if (n <= 0)
+    if (!dladdr((void *)rtapi_app_command, &info) || !info.dli_fname)
         return ".";
-    exe[n] = '\0';
-    snprintf(dir, sizeof dir, "%s", dirname(exe));
+    snprintf(lib, sizeof lib, "%s", info.dli_fname);
+    if (snprintf(dir, sizeof dir, "%s/../bin", dirname(lib)) >= (int)sizeof dir)
+        snprintf(dir, sizeof dir, ".");
+    if (realpath(dir, lib))
+        snprintf(dir, sizeof dir, "%s", lib);
     return dir;
 }
 
@@ -37,7 +41,8 @@ static int hc_rtapi(int argc, const char *argv[])
     rc = rtapi_app_command(argc, argv, 1, reply, sizeof reply);
     if (reply[0]) {
         size_t n = strlen(reply);
-        fprintf(rc < 0 ? stderr : stdout, "%s%s", reply, reply[n - 1] == '\n' ? "" : "\n");
+        fprintf(rc < 0 ? hc_stderr() : hc_stdout(), "%s%s", reply,
+                reply[n - 1] == '\n' ? "" : "\n");
     }
     return rc;
 }

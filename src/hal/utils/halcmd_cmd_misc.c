@@ -11,7 +11,7 @@
 /* Switch echoing of input lines on or off and say so. */
 static int hc_set_echo(int on)
 {
-    printf("Echo %s\n", on ? "on" : "off");
+    hc_print("Echo %s\n", on ? "on" : "off");
     hc.echo = on;
     return 0;
 }
@@ -45,19 +45,19 @@ int hc_cmd_print(int argc, char *argv[])
 int hc_cmd_source(int argc, char *argv[])
 {
     static int depth;
-    char name[HC_LINE_MAX];
+    char name[HC_LINE_MAX], lib_path[HC_LINE_MAX];
     const char *saved_file = hc.file;
     int saved_line = hc.line, saved_keep = hc.keep_going, rc;
     FILE *f;
     (void)argc;
-    snprintf(name, sizeof name, "%s", argv[0]);
+    snprintf(name, sizeof name, "%s", hc_resolve_lib(argv[0], lib_path, sizeof lib_path));
     if (depth >= HC_MAX_SOURCE_DEPTH) {
         hc_error("source: files nested more than %d deep", HC_MAX_SOURCE_DEPTH);
         return -1;
     }
     f = fopen(name, "r");
     if (!f) {
-        fprintf(stderr, "Could not open hal file '%s': %s\n", name, strerror(errno));
+        fprintf(hc_stderr(), "Could not open hal file '%s': %s\n", name, strerror(errno));
         return -1;
     }
     hc.file = name;
@@ -97,7 +97,7 @@ int hc_cmd_debug(int argc, char *argv[])
     hc_hal_fork_cost();
     rc = rtapi_app_command(2, args, 1, reply, sizeof reply);
     if (reply[0])
-        fprintf(rc < 0 ? stderr : stdout, "%s%s", reply,
+        fprintf(rc < 0 ? hc_stderr() : hc_stdout(), "%s%s", reply,
                 reply[strlen(reply) - 1] == '\n' ? "" : "\n");
     if (rc != 0) {
         hc_error("exit value: %d", rc & 255);

@@ -71,7 +71,8 @@ static pid_t hc_spawn(int argc, char *argv[])
     pid = fork();
     if (pid == 0) {
         execvp(av[0], av);
-        fprintf(stderr, "%s:%d: execv(%s): %s\n", hc.file, hc.line, av[0], strerror(errno));
+        fprintf(stderr, "%s:%d: execv(%s): %s\n", hc.file ? hc.file : "<commandline>", hc.line,
+                av[0], strerror(errno));
         _exit(1);
     }
     if (pid < 0)

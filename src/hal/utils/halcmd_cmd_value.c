@@ -58,7 +58,7 @@ static void hc_print_value(hal_type_t type, const hal_data_u *value, unsigned po
         snprintf(buf, sizeof buf, "%u", port_size);
     else
         hc_format_value_plain(type, (const void *)value, buf, sizeof buf);
-    printf("%s\n", buf);
+    hc_print("%s\n", buf);
 }
 
 /* setp name value: write an unlinked IN/IO pin or a RW param. */
@@ -123,7 +123,7 @@ static int hc_print_item(const char *name, int item, int what)
     if (rc < 0)
         return -1;
     if (what == HC_PRINT_TYPE)
-        printf("%s\n", hc_type_name(type));
+        hc_print("%s\n", hc_type_name(type));
     else
         hc_print_value(type, &value, item == HC_SIGNAL ? (unsigned)value.u : 0);
     return 0;

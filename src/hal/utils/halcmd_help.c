@@ -6,7 +6,7 @@
 void hc_usage(void)
 {
     const hc_command_t *k;
-    printf("Usage:  halcmd [options] [cmd [args]]\n"
+    hc_print("Usage:  halcmd [options] [cmd [args]]\n"
            "        halcmd [options] -f [filename]\n\n"
            "options:\n"
            "  -e          echo the commands from stdin to stderr\n"
@@ -22,7 +22,7 @@ void hc_usage(void)
            "  -h [cmd]    help on halcmd or on 'cmd'\n\n"
            "commands:\n\n");
     for (int i = 0; (k = hc_command_at(i)) != NULL; i++)
-        printf("  %s\n", k->synopsis);
+        hc_print("  %s\n", k->synopsis);
 }
 
 /* Print the help of one command; -1 when there is no such command. */
@@ -30,10 +30,10 @@ int hc_help_command(const char *name)
 {
     const hc_command_t *k = hc_find_command(name);
     if (k) {
-        printf("%s\n  %s\n", k->synopsis, k->text);
+        hc_print("%s\n  %s\n", k->synopsis, k->text);
         return 0;
     }
-    printf("No help for unknown command '%s'\n", name);
+    hc_print("No help for unknown command '%s'\n", name);
     return -1;
 }
 

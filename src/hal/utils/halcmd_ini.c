@@ -1,54 +1,76 @@
-/* halcmd_ini.c: minimal INI reader for [SECTION]KEY substitution (-i). */
-#include <ctype.h>
+/* halcmd_ini.c: [SECTION]KEY substitution values (-i) from the INI library, and LIB: file names. */
+#include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
+#include "emc/ini/inifile.h"
 #include "halcmd.h"
 
-/* Trim leading and trailing blanks in place; returns the start. */
-static char *hc_trim(char *s)
+/* The parsed -i file, opened on first use and kept for the whole run. */
+static ini_file_t *hc_ini;
+static const char *hc_ini_path;
+static int hc_ini_failed;
+
+/* Open (once) the INI file named by path; NULL when it cannot be parsed (reported once). */
+static ini_file_t *hc_ini_get(const char *path)
 {
-    char *end;
-    while (isspace((unsigned char)*s))
-        s++;
-    end = s + strlen(s);
-    while (end > s && isspace((unsigned char)end[-1]))
-        *--end = '\0';
-    return s;
+    if (hc_ini && hc_ini_path && strcmp(hc_ini_path, path) == 0)
+        return hc_ini;
+    if (hc_ini_failed && hc_ini_path && strcmp(hc_ini_path, path) == 0)
+        return NULL;
+    ini_close(hc_ini);
+    hc_ini_path = path;
+    hc_ini = ini_open(path);
+    hc_ini_failed = hc_ini == NULL;
+    if (hc_ini_failed)
+        hc_error("cannot use INI file '%s' for substitution (missing or invalid)", path);
+    return hc_ini;
 }
 
-/* Does this "[NAME]" line open the wanted section (NULL/empty = any)? */
-static int hc_section_match(char *line, const char *section, int *in_section)
-{
-    char *close = strchr(line, ']');
-    if (line[0] != '[' || !close)
-        return 0;
-    *close = '\0';
-    *in_section = (!section || !*section || strcmp(line + 1, section) == 0);
-    return 1;
-}
-
-/* Return a malloc'd copy of the first KEY value in SECTION, or NULL. */
+/* Return a malloc'd copy of the first KEY value in SECTION ("" = any section), or NULL. */
 char *hc_ini_lookup(const char *file, const char *section, const char *key)
 {
-    char buf[HC_LINE_MAX], *line, *eq, *result = NULL;
-    int in_section = 0;
-    FILE *f = file ? fopen(file, "r") : NULL;
-    if (!f)
+    ini_file_t *ini;
+    const char *value;
+    if (!file)
         return NULL;
-    while (!result && fgets(buf, sizeof buf, f)) {
-        line = hc_trim(buf);
-        if (*line == '#' || *line == ';' || *line == '\0')
-            continue;
-        if (hc_section_match(line, section, &in_section) || !in_section)
-            continue;
-        eq = strchr(line, '=');
-        if (!eq)
-            continue;
-        *eq = '\0';
-        if (strcmp(hc_trim(line), key) == 0)
-            result = strdup(hc_trim(eq + 1));
+    ini = hc_ini_get(file);
+    if (!ini)
+        return NULL;
+    value = ini_find(ini, key, section, 1);
+    return value ? strdup(value) : NULL;
+}
+
+/* The directory LIB: names refer to: $HALLIB_DIR, else <dir of halcmd>/../lib/hallib. */
+static void hc_hallib_dir(char *buf, size_t size)
+{
+    const char *env = getenv("HALLIB_DIR");
+    char exe[PATH_MAX];
+    ssize_t n;
+    char *slash;
+    if (env && *env) {
+        snprintf(buf, size, "%s", env);
+        return;
     }
-    fclose(f);
-    return result;
+    n = readlink("/proc/self/exe", exe, sizeof exe - 1);
+    exe[n > 0 ? n : 0] = '\0';
+    slash = strrchr(exe, '/');
+    if (slash)
+        *slash = '\0';
+    if (snprintf(buf, size, "%s/../lib/hallib", n > 0 ? exe : ".") >= (int)size)
+        snprintf(buf, size, "../lib/hallib");
+    if (realpath(buf, exe))
+        snprintf(buf, size, "%s", exe);
+}
+
+/* A file name as given, or for "LIB:name" the path of name in the HAL library directory. */
+const char *hc_resolve_lib(const char *name, char *buf, size_t size)
+{
+    char dir[PATH_MAX];
+    if (strncmp(name, "LIB:", 4) != 0)
+        return name;
+    hc_hallib_dir(dir, sizeof dir);
+    snprintf(buf, size, "%s/%s", dir, name + 4);
+    return buf;
 }

@@ -10,8 +10,6 @@
 #include "halcmd.h"
 #include "halcmd_hal.h"
 
-halcmd_state_t hc;
-
 /* Options collected by getopt before anything runs. */
 typedef struct {
     int file_mode, release, complete, help, msg_level;
@@ -65,8 +63,11 @@ static int hc_run_argv(int argc, char *argv[])
 /* Run commands from a file (or stdin when name is NULL). */
 static int hc_run_file(const char *name)
 {
+    char lib_path[4096];
     FILE *f = stdin;
     int rc;
+    if (name)
+        name = hc_resolve_lib(name, lib_path, sizeof lib_path);
     if (name) {
         f = fopen(name, "r");
         if (!f) {

@@ -3,11 +3,28 @@
 #include <stdio.h>
 #include "halcmd.h"
 
+halcmd_state_t hc;
+
+/* The stream command output goes to. */
+FILE *hc_stdout(void)
+{
+    return hc.out ? hc.out : stdout;
+}
+
+/* The stream errors and warnings go to. */
+FILE *hc_stderr(void)
+{
+    return hc.err ? hc.err : stderr;
+}
+
 /* Print "file:line: " followed by the formatted text to a stream. */
 static void hc_vmsg(FILE *out, const char *kind, const char *fmt, va_list ap)
 {
-    fflush(stdout);
-    fprintf(out, "%s:%d: %s", hc.file ? hc.file : "<commandline>", hc.line, kind);
+    fflush(hc_stdout());
+    if (hc.bare_messages)
+        fputs(kind, out);
+    else
+        fprintf(out, "%s:%d: %s", hc.file ? hc.file : "<commandline>", hc.line, kind);
     vfprintf(out, fmt, ap);
     fputc('\n', out);
     fflush(out);
@@ -18,7 +35,7 @@ void hc_error(const char *fmt, ...)
 {
     va_list ap;
     va_start(ap, fmt);
-    hc_vmsg(stderr, "", fmt, ap);
+    hc_vmsg(hc_stderr(), "", fmt, ap);
     va_end(ap);
 }
 
@@ -27,7 +44,7 @@ void hc_warning(const char *fmt, ...)
 {
     va_list ap;
     va_start(ap, fmt);
-    hc_vmsg(stderr, "Warning: ", fmt, ap);
+    hc_vmsg(hc_stderr(), "Warning: ", fmt, ap);
     va_end(ap);
 }
 
@@ -49,6 +66,15 @@ void hc_out(const char *fmt, ...)
     if (hc.quiet)
         return;
     va_start(ap, fmt);
-    vprintf(fmt, ap);
+    vfprintf(hc_stdout(), fmt, ap);
+    va_end(ap);
+}
+
+/* Print output that -Q leaves alone. */
+void hc_print(const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    vfprintf(hc_stdout(), fmt, ap);
     va_end(ap);
 }

@@ -79,7 +79,7 @@ int hc_run_tokens(int argc, char *argv[])
     if (cmd->flags & HC_TILDE)
         hc_expand_tilde(argc - 1, argv + 1, tilde_bufs);
     rc = cmd->fn(argc - 1, argv + 1);
-    fflush(stdout);
+    fflush(hc_stdout());
     return rc < 0 ? -1 : 0;
 }
 

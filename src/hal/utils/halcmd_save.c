@@ -199,7 +199,7 @@ static FILE *hc_save_open(int argc, char *argv[], char *tmp, size_t size)
         snprintf(tmp, size, "%s.tmp%d", argv[1], (int)getpid());
         return fopen(tmp, "w");
     }
-    return hc.quiet ? fopen("/dev/null", "w") : stdout;
+    return hc.quiet ? fopen("/dev/null", "w") : hc_stdout();
 }
 
 /* save [type [file]]: to stdout, or atomically replacing file. */
@@ -216,9 +216,9 @@ int hc_cmd_save(int argc, char *argv[])
     halpr_mutex_get();
     rc = hc_save_type(type, out);
     halpr_mutex_give();
-    if (out != stdout)
+    if (out != hc_stdout())
         write_failed = fclose(out) != 0;
-    fflush(stdout);
+    fflush(hc_stdout());
     if (rc < 0)
         hc_error("Unknown 'save' type '%s'", type);
     if (argc > 1 && (rc < 0 || write_failed || rename(tmp, argv[1]) < 0)) {

@@ -51,7 +51,7 @@ static int hc_show_thread_head(hal_thread_t *t)
     snprintf(name, sizeof name, "%s.tmax", t->name);
     tmax = halpr_find_param_by_name(name);
     if (!time || !tmax) {
-        fprintf(stderr, "unexpected: cannot find time/tmax pin for %s thread\n", t->name);
+        fprintf(hc_stderr(), "unexpected: cannot find time/tmax pin for %s thread\n", t->name);
         return -1;
     }
     tv = *(const hal_s32_t *)(const void *)halpr_pin_value(time);
@@ -143,7 +143,7 @@ int hc_cmd_show(int argc, char *argv[])
         rc = hc_show_type(argv[0], argc - 1, argv + 1);
     }
     halpr_mutex_give();
-    fflush(stdout);
+    fflush(hc_stdout());
     if (rc < 0)
         hc_error("Unknown 'show' type '%s'", argv[0]);
     return rc;
@@ -191,7 +191,7 @@ int hc_cmd_list(int argc, char *argv[])
     halpr_mutex_get();
     rc = hc_list_type(argv[0], argv + 1, argc - 1);
     halpr_mutex_give();
-    fflush(stdout);
+    fflush(hc_stdout());
     if (rc < 0)
         hc_error("Unknown 'list' type '%s'", argv[0]);
     return rc;

@@ -5,8 +5,6 @@
 #include "hal.h"
 #include "halcmd.h"
 
-halcmd_state_t hc;
-
 /* Run one "line <text>" case: print the tokens in brackets or nothing on error. */
 static void run_line(char *text)
 {

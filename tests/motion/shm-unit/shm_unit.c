@@ -69,7 +69,7 @@ static void test_finite(void)
         *d = 0.0;
     }
     cmd.tag.settings[1] = INFINITY;
-    EXPECT(emcmot_command_check_finite(&cmd, &field) == -EINVAL && strcmp(field, "tag.settings") == 0,
+    EXPECT(emcmot_command_check_finite(&cmd, &field) == -EINVAL && strcmp(field, "tag.settings[1]") == 0,
            "tag settings not checked");
     cmd.tag.settings[1] = 0;
     cmd.center.y = NAN;

@@ -1,0 +1,1 @@
+"""openemc_launcher: the `linuxcnc` launcher (start a configuration, run its display, clean up)."""

@@ -1,0 +1,233 @@
+/* tp_blend.c: quintic G2 blends: construction (scale fixed point), sizing tables and deviation checks. */
+#include <math.h>
+#include <string.h>
+#include "tp_blend.h"
+
+#define TP_BLEND_TABLE 181          /* one entry per degree, 0..180 */
+#define TP_BLEND_LAM_ITER 6
+#define TP_BLEND_SAMPLES 9          /* points of each side of the original path in deviation checks */
+
+/* Per unit cut of a line-line corner: vertex miss, largest |p''| and |p'''| along the blend. */
+static double tab_miss[TP_BLEND_TABLE], tab_d2[TP_BLEND_TABLE], tab_d3[TP_BLEND_TABLE];
+static int tab_ready;
+
+/* Quintic with scale lam matching its own length (so length is the parameter). */
+static int build_quintic(tp_quintic_t *q, const tp_jet_t *a, const tp_jet_t *b, tp_metric_t m,
+                         double lam_max, double *lam_out)
+{
+    tp_vec_t chord = tp_vec_sub(&b->p, &a->p);
+    double lam = tp_vec_metric_norm(&chord, m);
+    if (!(lam > 1e-12))
+        return -1;
+    for (int k = 0; k < TP_BLEND_LAM_ITER; k++) {
+        tp_quintic_hermite(q, a, b, lam);
+        double len = tp_quintic_length(q, m);
+        if (!(len > 0.0) || !isfinite(len) || len > lam_max)
+            return -1;
+        if (fabs(len - lam) <= 1e-13 * len) {
+            lam = len;
+            break;
+        }
+        lam = len;
+    }
+    tp_quintic_hermite(q, a, b, lam);
+    *lam_out = lam;
+    return 0;
+}
+
+/* Largest |p''| and |p'''| (w.r.t. length) sampled along a unit corner blend. */
+static void unit_peaks(const tp_geo_t *g, double *d2, double *d3)
+{
+    tp_bounds_t b;
+    *d2 = *d3 = 0.0;
+    for (int k = 0; k < 16; k++) {
+        tp_geo_bounds(g, g->len * k / 16.0, g->len * (k + 1) / 16.0, &b);
+        *d2 = fmax(*d2, b.d2[TP_PATH_AX]);
+        *d3 = fmax(*d3, b.d3[TP_PATH_AX]);
+    }
+}
+
+/* Closest distance from point c to a quintic (sampled, then refined by golden sections). */
+static double quintic_miss(const tp_quintic_t *q, const tp_vec_t *c)
+{
+    int best = 0;
+    double dbest = INFINITY;
+    for (int k = 0; k <= 32; k++) {
+        tp_vec_t p = tp_quintic_point(q, k / 32.0), d = tp_vec_sub(&p, c);
+        double dist = sqrt(tp_vec_dot(&d, &d));
+        if (dist < dbest) {
+            dbest = dist;
+            best = k;
+        }
+    }
+    double lo = fmax(0.0, (best - 1) / 32.0), hi = fmin(1.0, (best + 1) / 32.0);
+    const double gr = 0.6180339887498949;
+    for (int it = 0; it < 30; it++) {
+        double m1 = hi - gr * (hi - lo), m2 = lo + gr * (hi - lo);
+        tp_vec_t p1 = tp_quintic_point(q, m1), p2 = tp_quintic_point(q, m2);
+        tp_vec_t d1 = tp_vec_sub(&p1, c), d2 = tp_vec_sub(&p2, c);
+        if (tp_vec_dot(&d1, &d1) < tp_vec_dot(&d2, &d2))
+            hi = m2;
+        else
+            lo = m1;
+    }
+    tp_vec_t p = tp_quintic_point(q, 0.5 * (lo + hi)), d = tp_vec_sub(&p, c);
+    return fmin(dbest, sqrt(tp_vec_dot(&d, &d)));
+}
+
+/* Fill the line-line tables: a unit cut on each side of corners of 0..180 degrees. */
+void tp_blend_init(void)
+{
+    if (tab_ready)
+        return;
+    for (int k = 0; k < TP_BLEND_TABLE; k++) {
+        double th = fmin(k, 179.0) * M_PI / 180.0;
+        tp_jet_t a, b;
+        memset(&a, 0, sizeof(a));
+        memset(&b, 0, sizeof(b));
+        a.p.x[0] = -1.0;
+        a.d1.x[0] = 1.0;
+        b.p.x[0] = cos(th);
+        b.p.x[1] = sin(th);
+        b.d1.x[0] = cos(th);
+        b.d1.x[1] = sin(th);
+        tp_geo_t g;
+        memset(&g, 0, sizeof(g));
+        g.kind = TP_GEO_QUINTIC;
+        g.metric = TP_METRIC_XYZ;
+        if (build_quintic(&g.u.q, &a, &b, TP_METRIC_XYZ, 8.0, &g.len) < 0) {
+            tab_miss[k] = 1.0;
+            tab_d2[k] = tab_d3[k] = 1e6;
+            continue;
+        }
+        tp_vec_t origin = {{0}};
+        tab_miss[k] = quintic_miss(&g.u.q, &origin);
+        unit_peaks(&g, &tab_d2[k], &tab_d3[k]);
+    }
+    tab_ready = 1;
+}
+
+/* Linear interpolation in a table indexed by degrees. */
+static double tab_at(const double *tab, double theta)
+{
+    double deg = theta * 180.0 / M_PI;
+    if (deg <= 0.0)
+        return tab[0];
+    if (deg >= TP_BLEND_TABLE - 1)
+        return tab[TP_BLEND_TABLE - 1];
+    int k = (int)deg;
+    double f = deg - k;
+    return tab[k] + f * (tab[k + 1] - tab[k]);
+}
+
+/* Tangent angle and curvature jump at the corner between ga's end and gb's start. */
+void tp_corner_describe(tp_corner_t *c, const tp_geo_t *ga, const tp_geo_t *gb)
+{
+    tp_jet_t ja = tp_geo_jet(ga, ga->len), jb = tp_geo_jet(gb, 0.0);
+    double na = sqrt(tp_vec_dot(&ja.d1, &ja.d1)), nb = sqrt(tp_vec_dot(&jb.d1, &jb.d1));
+    double cs = tp_vec_dot(&ja.d1, &jb.d1) / (na * nb);
+    c->ga = ga;
+    c->gb = gb;
+    c->theta = acos(fmax(-1.0, fmin(1.0, cs)));
+    tp_vec_t dk = tp_vec_sub(&ja.d2, &jb.d2);
+    c->kink = sqrt(tp_vec_dot(&dk, &dk));
+}
+
+/* Symmetric cut whose line-line blend misses the corner by tol (curvature jumps: a clothoid estimate). */
+double tp_blend_tol_cut(const tp_corner_t *c, double tol)
+{
+    double d = INFINITY;
+    double miss = tab_at(tab_miss, c->theta);
+    if (c->theta > 1e-9 && miss > 1e-15)
+        d = tol / miss;
+    if (c->kink > 1e-12)
+        d = fmin(d, sqrt(24.0 * tol / c->kink));
+    return d;
+}
+
+/* Smallest symmetric cut for which the blend's curvature and its change allow speed v. */
+double tp_blend_need_cut(const tp_corner_t *c, double v, double acc, double jerk)
+{
+    double d2 = tab_at(tab_d2, c->theta), d3 = tab_at(tab_d3, c->theta);
+    double d = 0.0;
+    if (acc > 0.0)
+        d = fmax(d, v * v * d2 / acc);
+    if (jerk > 0.0)
+        d = fmax(d, sqrt(v * v * v * d3 / jerk));
+    if (c->kink > 1e-12) {
+        if (acc > 0.0)
+            d = fmax(d, v * v * c->kink / acc);
+        if (jerk > 0.0)
+            d = fmax(d, 2.0 * v * v * v * c->kink / jerk);
+    }
+    return d;
+}
+
+/* Build the blend from ga at (len - da) to gb at db. */
+int tp_blend_build(tp_geo_t *out, const tp_corner_t *c, const tp_blend_spec_t *spec)
+{
+    tp_jet_t a = tp_geo_jet(c->ga, c->ga->len - spec->da);
+    tp_jet_t b = tp_geo_jet(c->gb, spec->db);
+    if (spec->ka_set)
+        a.d2 = spec->ka;
+    if (spec->kb_set)
+        b.d2 = spec->kb;
+    memset(out, 0, sizeof(*out));
+    out->kind = TP_GEO_QUINTIC;
+    out->metric = c->ga->metric;
+    double lam_max = 2.0 * (spec->da + spec->db);
+    return build_quintic(&out->u.q, &a, &b, out->metric, lam_max, &out->len);
+}
+
+/* Distance from p to the segment [a, b] in nine axes. */
+static double seg_dist(const tp_vec_t *p, const tp_vec_t *a, const tp_vec_t *b)
+{
+    tp_vec_t ab = tp_vec_sub(b, a), ap = tp_vec_sub(p, a);
+    double l2 = tp_vec_dot(&ab, &ab), t = l2 > 0.0 ? tp_vec_dot(&ap, &ab) / l2 : 0.0;
+    t = fmax(0.0, fmin(1.0, t));
+    tp_vec_t q = tp_vec_axpy(a, t, &ab), d = tp_vec_sub(p, &q);
+    return sqrt(tp_vec_dot(&d, &d));
+}
+
+/* Sample the replaced path: the end of ga and the start of gb, and how far chords stray from it. */
+static double replaced_polyline(const tp_corner_t *c, const tp_blend_spec_t *spec, tp_vec_t *pts)
+{
+    int n = TP_BLEND_SAMPLES;
+    double sag = 0.0;
+    for (int k = 0; k < n; k++) {
+        double sa = c->ga->len - spec->da * (1.0 - (double)k / (n - 1));
+        double sb = spec->db * (double)k / (n - 1);
+        pts[k] = tp_geo_eval(c->ga, sa);
+        pts[n - 1 + k] = tp_geo_eval(c->gb, sb);
+    }
+    for (int k = 0; k + 1 < 2 * n - 1; k++) {
+        const tp_geo_t *g = k < n - 1 ? c->ga : c->gb;
+        if (g->kind == TP_GEO_LINE)
+            continue;
+        double s = k < n - 1 ? c->ga->len - spec->da * (1.0 - (k + 0.5) / (n - 1))
+                             : spec->db * (k - n + 1.5) / (n - 1);
+        tp_vec_t mid = tp_geo_eval(g, s);
+        tp_vec_t half = tp_vec_sub(&pts[k + 1], &pts[k]);
+        tp_vec_t cm = tp_vec_axpy(&pts[k], 0.5, &half), d = tp_vec_sub(&mid, &cm);
+        sag = fmax(sag, sqrt(tp_vec_dot(&d, &d)));
+    }
+    return sag;
+}
+
+/* Vertex miss and path deviation of a blend against the geometry it replaces. */
+void tp_blend_deviation(const tp_geo_t *blend, const tp_corner_t *c, const tp_blend_spec_t *spec,
+                        double *vertex_miss, double *path_dev)
+{
+    tp_vec_t corner = tp_geo_eval(c->ga, c->ga->len);
+    tp_vec_t pts[2 * TP_BLEND_SAMPLES - 1];
+    *vertex_miss = quintic_miss(&blend->u.q, &corner);
+    double sag = replaced_polyline(c, spec, pts), dev = 0.0;
+    for (int k = 1; k < 16; k++) {
+        tp_vec_t p = tp_quintic_point(&blend->u.q, k / 16.0);
+        double best = INFINITY;
+        for (int m = 0; m + 1 < 2 * TP_BLEND_SAMPLES - 1; m++)
+            best = fmin(best, seg_dist(&p, &pts[m], &pts[m + 1]));
+        dev = fmax(dev, best);
+    }
+    *path_dev = dev + sag;
+}

@@ -1,0 +1,108 @@
+/* tp_caps.c: caps of a piece: per axis |d1| a + |d2| v^2 <= A and |d1| j + 3 |d2| v a + |d3| v^3 <= J. */
+#include <math.h>
+#include "tp_caps.h"
+
+/* Derivative bounds below this count as zero. */
+#define TP_CAPS_TINY 1e-12
+#define TP_CAPS_ITER 48
+
+/* Largest x with k x <= limit over the limited axes that move (INFINITY if none). */
+static double ratio_min(const double *lim, const double *k)
+{
+    double m = INFINITY;
+    for (int i = 0; i < TP_NBOUND; i++)
+        if (lim[i] > 0.0 && k[i] > TP_CAPS_TINY)
+            m = fmin(m, lim[i] / k[i]);
+    return m;
+}
+
+/* Tangential acceleration left at speed v by the curvature terms. */
+static double acc_left(const tp_bounds_t *b, const tp_axlim_t *l, double v)
+{
+    double m = INFINITY;
+    for (int i = 0; i < TP_NBOUND; i++) {
+        if (!(l->acc[i] > 0.0))
+            continue;
+        double rest = l->acc[i] - b->d2[i] * v * v;
+        if (rest < 0.0)
+            return -1.0;
+        if (b->d1[i] > TP_CAPS_TINY)
+            m = fmin(m, rest / b->d1[i]);
+    }
+    return m;
+}
+
+/* Tangential jerk left at speed v and tangential acceleration a. */
+static double jerk_left(const tp_bounds_t *b, const tp_axlim_t *l, double v, double a)
+{
+    double m = INFINITY;
+    for (int i = 0; i < TP_NBOUND; i++) {
+        if (!(l->jerk[i] > 0.0))
+            continue;
+        double rest = l->jerk[i] - 3.0 * b->d2[i] * v * a - b->d3[i] * v * v * v;
+        if (rest < 0.0)
+            return -1.0;
+        if (b->d1[i] > TP_CAPS_TINY)
+            m = fmin(m, rest / b->d1[i]);
+    }
+    return m;
+}
+
+/* Largest tangential acceleration at speed v that still leaves j_keep of tangential jerk. */
+static double acc_for_jerk(const tp_bounds_t *b, const tp_axlim_t *l, double v, double j_keep)
+{
+    double m = INFINITY;
+    for (int i = 0; i < TP_NBOUND; i++) {
+        if (!(l->jerk[i] > 0.0))
+            continue;
+        double rest = l->jerk[i] - b->d3[i] * v * v * v - j_keep * b->d1[i];
+        if (rest < 0.0)
+            return -1.0;
+        double k = 3.0 * b->d2[i] * v;
+        if (k > TP_CAPS_TINY)
+            m = fmin(m, rest / k);
+    }
+    return m;
+}
+
+/* Usable tangential acceleration at speed v (negative when v is not feasible). */
+static double usable_acc(const tp_bounds_t *b, const tp_axlim_t *l, double v, int with_jerk,
+                         double j_keep)
+{
+    double a = acc_left(b, l, v);
+    if (with_jerk && a >= 0.0)
+        a = fmin(a, acc_for_jerk(b, l, v, j_keep));
+    return a;
+}
+
+/* Compute the caps: the fastest speed that keeps the reserves, then what is left at that speed. */
+void tp_caps_compute(const tp_bounds_t *b, const tp_axlim_t *l, double v_need, int with_jerk,
+                     tp_caps_t *out)
+{
+    double a_line = ratio_min(l->acc, b->d1);
+    double j_line = with_jerk ? ratio_min(l->jerk, b->d1) : 0.0;
+    double a_keep = TP_CAPS_ACC_RESERVE * a_line;
+    double j_keep = with_jerk ? TP_CAPS_JERK_RESERVE * j_line : 0.0;
+    double v_hi = fmin(ratio_min(l->vel, b->d1), v_need);
+    if (!isfinite(v_hi))
+        v_hi = 1e9;
+    double v = v_hi;
+    if (usable_acc(b, l, v_hi, with_jerk, j_keep) < a_keep) {
+        double lo = 0.0, hi = v_hi;
+        for (int k = 0; k < TP_CAPS_ITER; k++) {
+            double mid = 0.5 * (lo + hi);
+            if (usable_acc(b, l, mid, with_jerk, j_keep) >= a_keep)
+                lo = mid;
+            else
+                hi = mid;
+        }
+        v = lo;
+    }
+    out->v = v;
+    out->a = fmin(usable_acc(b, l, v, with_jerk, j_keep), a_line);
+    if (!(out->a > 0.0))
+        out->a = a_keep > 0.0 ? a_keep : 1e-9;
+    out->j = with_jerk ? fmin(jerk_left(b, l, v, out->a), j_line) : 0.0;
+    if (with_jerk && !(out->j > 0.0))
+        out->j = j_keep > 0.0 ? j_keep : 1e-9;
+}

@@ -1,0 +1,223 @@
+/* tp_emit.c: turn finished geometry into elements and merge their caps into regions. */
+#include <math.h>
+#include <string.h>
+#include "tp_internal.h"
+
+/* Cap steps: caps are rounded down to 1/64 octave so that near-equal pieces share a region. */
+#define TP_CAP_STEPS 64.0
+/* A region aims at 1/TP_REGION_SHARE of the braking distance at its speed. */
+#define TP_REGION_SHARE 24.0
+/* Elements a single add may need (blend halves, body, fallback pieces). */
+#define TP_EMIT_PER_ADD 8
+
+/* Round a positive cap down to the step grid (0 and INFINITY unchanged). */
+static double quantize(double x)
+{
+    if (!(x > 0.0) || !isfinite(x))
+        return x;
+    return exp2(floor(log2(x) * TP_CAP_STEPS) / TP_CAP_STEPS);
+}
+
+/* Speed the planner may ask of a piece of the owner: requested speed times the largest override. */
+static double need_speed(const tp_planner_t *tp, const tp_seg_t *s)
+{
+    double mfo = tp->lim.max_feed_override > 1.0 ? tp->lim.max_feed_override : 1.0;
+    if (s->sync != TP_SYNC_NONE || s->in.kind == TP_SEG_RIGID_TAP)
+        return s->in.ini_maxvel > 0.0 ? s->in.ini_maxvel : INFINITY;
+    if (s->in.motion_type == TP_MOTION_TRAVERSE)
+        return s->in.vel > 0.0 ? s->in.vel : s->in.ini_maxvel;
+    return s->in.vel * mfo;
+}
+
+/* Braking distance estimate of a region at its own caps (for region sizing). */
+static double region_reach(const tp_planner_t *tp, const tp_region_t *r)
+{
+    double v = r->v_mach;
+    double fv = fmin(r->v_feed * fmax(1.0, tp->lim.max_feed_override), r->v_rapid);
+    if (isfinite(fv))
+        v = fmin(v, fv);
+    if (!isfinite(v) || !(r->a > 0.0))
+        return 0.0;
+    double d = v * v / (2.0 * r->a);
+    if (r->j > 0.0)
+        d += v * r->a / r->j;
+    return fmax(d / TP_REGION_SHARE, 4.0 * v * tp->lim.cycle_time);
+}
+
+/* The executor is far enough from the open region that lowering its caps is safe. */
+static int region_far(const tp_planner_t *tp, const tp_region_t *r)
+{
+    tp_lim1_t lim = {0.5 * r->a, r->j > 0.0 ? 0.5 * r->j : 0.0};
+    if (!(lim.acc > 0.0))
+        return 0;
+    double stop = tp_stop_dist(tp->ex.v, tp->ex.a, &lim);
+    return r->s0 - tp->ex.s > 2.0 * stop + tp->ex.v * 4.0 * tp->lim.cycle_time + 1e-9;
+}
+
+/* Merge a piece into the open region, or open a new region. */
+static void region_add(tp_planner_t *tp, const tp_region_t *piece)
+{
+    if (tp->reg_open && tp->reg_head > tp->reg_tail) {
+        tp_region_t *r = tp_reg_at(tp, tp->reg_head - 1);
+        int same = piece->v_mach == r->v_mach && piece->a == r->a && piece->j == r->j &&
+                   piece->v_feed == r->v_feed && piece->v_rapid == r->v_rapid &&
+                   piece->sync_k == r->sync_k;
+        int faster = piece->v_mach >= r->v_mach && piece->a >= r->a && piece->j >= r->j &&
+                     piece->v_feed >= r->v_feed && piece->v_rapid >= r->v_rapid &&
+                     piece->sync_k >= r->sync_k;
+        int compatible = !(piece->flags & (TP_REG_STOP | TP_REG_TAP)) && piece->flags == r->flags &&
+                         !isfinite(piece->v_start) &&
+                         fabs(r->s0 + r->len - piece->s0) <= 1e-9 * (1.0 + fabs(piece->s0));
+        int short_r = r->len < region_reach(tp, r);
+        int short_p = piece->len < region_reach(tp, piece);
+        if (compatible && (same || (short_r && short_p && (faster || region_far(tp, r))))) {
+            r->v_mach = fmin(r->v_mach, piece->v_mach);
+            r->a = fmin(r->a, piece->a);
+            r->j = fmin(r->j, piece->j);
+            r->v_feed = fmin(r->v_feed, piece->v_feed);
+            r->v_rapid = fmin(r->v_rapid, piece->v_rapid);
+            r->sync_k = fmin(r->sync_k, piece->sync_k);
+            r->len = piece->s0 + piece->len - r->s0;
+            return;
+        }
+    }
+    *tp_reg_at(tp, tp->reg_head) = *piece;
+    tp->reg_head++;
+    tp->reg_open = 1;
+}
+
+/* Elementwise smaller of two limit sets (0 = none). */
+static void lim_min(tp_axlim_t *out, const tp_axlim_t *a, const tp_axlim_t *b)
+{
+    for (int i = 0; i < TP_NBOUND; i++) {
+        out->vel[i] = a->vel[i] > 0.0 && b->vel[i] > 0.0 ? fmin(a->vel[i], b->vel[i])
+                                                           : fmax(a->vel[i], b->vel[i]);
+        out->acc[i] = a->acc[i] > 0.0 && b->acc[i] > 0.0 ? fmin(a->acc[i], b->acc[i])
+                                                           : fmax(a->acc[i], b->acc[i]);
+        out->jerk[i] = a->jerk[i] > 0.0 && b->jerk[i] > 0.0 ? fmin(a->jerk[i], b->jerk[i])
+                                                              : fmax(a->jerk[i], b->jerk[i]);
+    }
+}
+
+/* Region describing a piece: caps from the derivative bounds, feed from the owner. */
+static void piece_region(tp_planner_t *tp, const tp_geo_t *g, double u0, double u1,
+                         const tp_axlim_t *lim, const tp_seg_t *owner, uint32_t flags,
+                         tp_region_t *r)
+{
+    tp_bounds_t b;
+    tp_caps_t c;
+    tp_geo_bounds(g, u0, u1, &b);
+    tp_caps_compute(&b, lim, need_speed(tp, owner), tp->type == TP_PLANNER_SCURVE, &c);
+    if (!isfinite(c.v))
+        c.v = 1e9;
+    memset(r, 0, sizeof(*r));
+    r->s0 = tp->s_emit;
+    r->len = u1 - u0;
+    double v_need = need_speed(tp, owner);
+    r->v_mach = c.v >= v_need ? v_need : quantize(c.v);
+    r->a = quantize(c.a);
+    r->j = quantize(c.j);
+    r->v_feed = r->v_rapid = INFINITY;
+    r->sync_k = INFINITY;
+    if (owner->sync == TP_SYNC_POS)
+        flags |= TP_REG_SYNC_POS;
+    else if (owner->sync == TP_SYNC_VEL) {
+        flags |= TP_REG_SYNC_VEL;
+        r->sync_k = fabs(owner->sync_k);
+    } else if (owner->in.motion_type == TP_MOTION_TRAVERSE)
+        r->v_rapid = owner->in.vel > 0.0 ? owner->in.vel : INFINITY;
+    else
+        r->v_feed = owner->in.vel;
+    if (owner->in.kind == TP_SEG_RIGID_TAP)
+        flags |= TP_REG_TAP;
+    r->flags = flags;
+    r->v_start = (flags & TP_REG_STOP) ? 0.0 : INFINITY;
+    r->seg = owner->serial;
+}
+
+/* Append one element [u0, u1] of a geometry with the given limits. */
+static void emit_elem(tp_planner_t *tp, tp_seg_t *owner, tp_seg_t *geo_seg, int is_blend,
+                      double u0, double u1, const tp_axlim_t *lim, uint32_t flags)
+{
+    if (!(u1 - u0 > 0.0) && !(flags & TP_REG_TAP))
+        return;
+    if (tp->stop_next)
+        flags |= TP_REG_STOP;
+    tp->stop_next = 0;
+    const tp_geo_t *g = is_blend ? &geo_seg->blend : &geo_seg->geo;
+    tp_region_t r;
+    piece_region(tp, g, u0, u1, lim, owner, flags, &r);
+    tp_elem_t *e = tp_elem_at(tp, tp->elem_head);
+    e->owner = owner->serial;
+    e->geo_seg = geo_seg->serial;
+    e->is_blend = is_blend;
+    e->u0 = u0;
+    e->s0 = tp->s_emit;
+    e->len = u1 - u0;
+    tp->elem_head++;
+    region_add(tp, &r);
+    tp->s_emit += u1 - u0;
+    owner->s_end = tp->s_emit;
+}
+
+/* Emit part [u0, u1] of a segment's own move. */
+void tp_emit_piece(tp_planner_t *tp, tp_seg_t *owner, tp_seg_t *geo_seg, int is_blend, double u0,
+                   double u1, uint32_t flags)
+{
+    emit_elem(tp, owner, geo_seg, is_blend, u0, u1, &owner->lim, flags);
+}
+
+/* Emit the blend stored in a (from a into b): first half owned by a, second by b. */
+void tp_emit_blend(tp_planner_t *tp, tp_seg_t *a, tp_seg_t *b, uint32_t flags)
+{
+    tp_axlim_t lim;
+    double half = 0.5 * a->blend.len;
+    lim_min(&lim, &a->lim, &b->lim);
+    emit_elem(tp, a, a, 1, 0.0, half, &lim, flags);
+    emit_elem(tp, b, a, 1, half, a->blend.len, &lim, 0);
+}
+
+/* Emit the body of the newest move to its end; tp_emit_truncate shortens it once its end is known. */
+void tp_emit_provisional(tp_planner_t *tp, tp_seg_t *s)
+{
+    uint64_t regs = tp->reg_head;
+    tp->prov.reg_open_before = tp->reg_open;
+    tp->prov.stop_flag = tp->stop_next ? TP_REG_STOP : 0;
+    tp->prov.elem = tp->elem_head;
+    tp_emit_piece(tp, s, s, 0, s->cut_in, s->geo.len, 0);
+    tp->prov.valid = tp->elem_head > tp->prov.elem;
+    tp->prov.new_region = tp->reg_head > regs;
+}
+
+/* Cut the last cut units off the provisional body; 0, or -1 when the body is not the path end. */
+int tp_emit_truncate(tp_planner_t *tp, double cut)
+{
+    if (!tp->prov.valid || tp->prov.elem + 1 != tp->elem_head)
+        return -1;
+    tp_elem_t *e = tp_elem_at(tp, tp->prov.elem);
+    tp_region_t *r = tp_reg_at(tp, tp->reg_head - 1);
+    if (cut > e->len)
+        cut = e->len;
+    tp->path_version++;
+    e->len -= cut;
+    r->len -= cut;
+    tp->s_emit -= cut;
+    tp_seg_at(tp, e->owner)->s_end = tp->s_emit;
+    if (e->len <= 0.0 && tp->ex.elem < tp->prov.elem) {
+        tp->elem_head--;
+        if (tp->prov.new_region && tp->ex.reg < tp->reg_head - 1) {
+            tp->reg_head--;
+            tp->reg_open = tp->prov.reg_open_before;
+            tp->stop_next = tp->prov.stop_flag ? 1 : tp->stop_next;
+        }
+    }
+    tp->prov.valid = 0;
+    return 0;
+}
+
+/* Non-zero when the element and region rings can take another add. */
+int tp_emit_space(const tp_planner_t *tp)
+{
+    return tp->elem_head - tp->elem_tail + TP_EMIT_PER_ADD <= tp->elem_cap &&
+           tp->reg_head - tp->reg_tail + TP_EMIT_PER_ADD <= tp->reg_cap;
+}

@@ -1,0 +1,368 @@
+/* tp_geom.c: evaluation and derivative bounds of lines, arcs and quintic blends. */
+#include <math.h>
+#include <string.h>
+#include "tp_geom.h"
+
+/* Below this a length counts as zero (machine units). */
+#define TP_GEO_TINY 1e-12
+
+/* Metric of a displacement: XYZ if it moves, else UVW, else ABC. */
+static tp_metric_t metric_of(const tp_vec_t *d, double *len)
+{
+    double xyz = tp_vec_norm3(d, TP_AX_X), uvw = tp_vec_norm3(d, TP_AX_U);
+    if (xyz > TP_GEO_TINY) {
+        *len = xyz;
+        return TP_METRIC_XYZ;
+    }
+    if (uvw > TP_GEO_TINY) {
+        *len = uvw;
+        return TP_METRIC_UVW;
+    }
+    *len = tp_vec_norm3(d, TP_AX_A);
+    return TP_METRIC_ABC;
+}
+
+/* Make a line; -1 when no axis group moves. */
+int tp_geo_line(tp_geo_t *g, const tp_vec_t *start, const tp_vec_t *end)
+{
+    tp_vec_t d = tp_vec_sub(end, start);
+    double len;
+    memset(g, 0, sizeof(*g));
+    g->kind = TP_GEO_LINE;
+    g->metric = metric_of(&d, &len);
+    if (!(len > TP_GEO_TINY))
+        return -1;
+    g->len = len;
+    g->u.line.start = *start;
+    g->u.line.end = *end;
+    g->u.line.dir = tp_vec_scale(&d, 1.0 / len);
+    return 0;
+}
+
+static double dot3(const double *a, const double *b)
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+static void cross3(const double *a, const double *b, double *r)
+{
+    r[0] = a[1] * b[2] - a[2] * b[1];
+    r[1] = a[2] * b[0] - a[0] * b[2];
+    r[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+/* Fill the plane basis, radii, sweep and axial rise of an arc; -1 when degenerate. */
+static int arc_frame(tp_arc_t *a, const double nrm[3], int turn)
+{
+    double nn = sqrt(dot3(nrm, nrm));
+    if (!(nn > TP_GEO_TINY))
+        return -1;
+    double dir = turn < 0 ? -1.0 : 1.0;
+    int extra = turn < 0 ? -turn - 1 : turn;
+    for (int i = 0; i < 3; i++)
+        a->n[i] = dir * nrm[i] / nn;
+    double ps[3], pe[3];
+    for (int i = 0; i < 3; i++) {
+        ps[i] = a->start.x[i] - a->c[i];
+        pe[i] = a->end.x[i] - a->c[i];
+    }
+    double hs = dot3(ps, a->n), he = dot3(pe, a->n);
+    for (int i = 0; i < 3; i++) {
+        ps[i] -= hs * a->n[i];
+        pe[i] -= he * a->n[i];
+    }
+    a->r0 = sqrt(dot3(ps, ps));
+    a->r1 = sqrt(dot3(pe, pe));
+    if (!(a->r0 > TP_GEO_TINY) || !(a->r1 > TP_GEO_TINY))
+        return -1;
+    for (int i = 0; i < 3; i++)
+        a->e1[i] = ps[i] / a->r0;
+    cross3(a->n, a->e1, a->e2);
+    double ang = atan2(dot3(pe, a->e2), dot3(pe, a->e1));
+    if (ang <= 1e-12)
+        ang += 2.0 * M_PI;
+    a->sweep = ang + 2.0 * M_PI * extra;
+    a->h = he - hs;
+    return 0;
+}
+
+/* Make an arc from start to end about center; the length is the helix length in XYZ. */
+int tp_geo_arc(tp_geo_t *g, const tp_vec_t *start, const tp_vec_t *end, const double center[3],
+               const double normal[3], int turn)
+{
+    memset(g, 0, sizeof(*g));
+    g->kind = TP_GEO_ARC;
+    g->metric = TP_METRIC_XYZ;
+    tp_arc_t *a = &g->u.arc;
+    a->start = *start;
+    a->end = *end;
+    for (int i = 0; i < 3; i++)
+        a->c[i] = center[i];
+    if (arc_frame(a, normal, turn) < 0)
+        return -1;
+    double planar = 0.5 * (a->r0 + a->r1) * a->sweep;
+    g->len = sqrt(planar * planar + a->h * a->h);
+    return g->len > TP_GEO_TINY ? 0 : -1;
+}
+
+/* Bernstein weights of degree n at u (n <= 5). */
+static void bernstein(int n, double u, double *w)
+{
+    static const double binom[6][6] = {
+        {1}, {1, 1}, {1, 2, 1}, {1, 3, 3, 1}, {1, 4, 6, 4, 1}, {1, 5, 10, 10, 5, 1}};
+    double pu[6], pv[6];
+    pu[0] = pv[0] = 1.0;
+    for (int k = 1; k <= n; k++) {
+        pu[k] = pu[k - 1] * u;
+        pv[k] = pv[k - 1] * (1.0 - u);
+    }
+    for (int k = 0; k <= n; k++)
+        w[k] = binom[n][k] * pu[k] * pv[n - k];
+}
+
+/* Sum of weighted control vectors. */
+static tp_vec_t bez_sum(const tp_vec_t *c, const double *w, int n)
+{
+    tp_vec_t r = {{0}};
+    for (int k = 0; k <= n; k++)
+        for (int i = 0; i < TP_NAX; i++)
+            r.x[i] += w[k] * c[k].x[i];
+    return r;
+}
+
+/* Forward differences of a control polygon, times the degree. */
+static void bez_diff(const tp_vec_t *c, int n, tp_vec_t *out)
+{
+    for (int k = 0; k < n; k++)
+        for (int i = 0; i < TP_NAX; i++)
+            out[k].x[i] = n * (c[k + 1].x[i] - c[k].x[i]);
+}
+
+/* Point of a quintic at u. */
+tp_vec_t tp_quintic_point(const tp_quintic_t *q, double u)
+{
+    double w[6];
+    if (u >= 1.0)
+        return q->b[5];
+    if (u <= 0.0)
+        return q->b[0];
+    bernstein(5, u, w);
+    return bez_sum(q->b, w, 5);
+}
+
+/* Quintic position and derivatives w.r.t. length (u = s / len). */
+static tp_jet_t quintic_jet(const tp_geo_t *g, double s)
+{
+    tp_vec_t d1[5], d2[4];
+    double w[6], u = s / g->len;
+    tp_jet_t j;
+    bez_diff(g->u.q.b, 5, d1);
+    bez_diff(d1, 4, d2);
+    j.p = tp_quintic_point(&g->u.q, u);
+    bernstein(4, u, w);
+    j.d1 = bez_sum(d1, w, 4);
+    j.d1 = tp_vec_scale(&j.d1, 1.0 / g->len);
+    bernstein(3, u, w);
+    j.d2 = bez_sum(d2, w, 3);
+    j.d2 = tp_vec_scale(&j.d2, 1.0 / (g->len * g->len));
+    return j;
+}
+
+/* Arc position and derivatives at s. */
+static tp_jet_t arc_jet(const tp_geo_t *g, double s)
+{
+    const tp_arc_t *a = &g->u.arc;
+    double f = s / g->len, om = a->sweep / g->len, rho = (a->r1 - a->r0) / g->len;
+    double ph = a->sweep * f, cs = cos(ph), sn = sin(ph), r = a->r0 + (a->r1 - a->r0) * f;
+    tp_jet_t j;
+    for (int i = 0; i < 3; i++) {
+        double rad = cs * a->e1[i] + sn * a->e2[i], tan = -sn * a->e1[i] + cs * a->e2[i];
+        j.p.x[i] = a->c[i] + r * rad + a->n[i] * (dot3(a->start.x, a->n) - dot3(a->c, a->n) + a->h * f);
+        j.d1.x[i] = rho * rad + r * om * tan + a->n[i] * a->h / g->len;
+        j.d2.x[i] = 2.0 * rho * om * tan - r * om * om * rad;
+    }
+    for (int i = 3; i < TP_NAX; i++) {
+        double d = a->end.x[i] - a->start.x[i];
+        j.p.x[i] = a->start.x[i] + d * f;
+        j.d1.x[i] = d / g->len;
+        j.d2.x[i] = 0.0;
+    }
+    return j;
+}
+
+/* Position and derivatives at s. */
+tp_jet_t tp_geo_jet(const tp_geo_t *g, double s)
+{
+    tp_jet_t j;
+    if (s < 0.0)
+        s = 0.0;
+    if (s > g->len)
+        s = g->len;
+    switch (g->kind) {
+    case TP_GEO_ARC:
+        return arc_jet(g, s);
+    case TP_GEO_QUINTIC:
+        return quintic_jet(g, s);
+    default:
+        j.p = tp_geo_eval(g, s);
+        j.d1 = g->u.line.dir;
+        memset(&j.d2, 0, sizeof(j.d2));
+        return j;
+    }
+}
+
+/* Position at s; the exact end point at (or past) the end. */
+tp_vec_t tp_geo_eval(const tp_geo_t *g, double s)
+{
+    if (s >= g->len)
+        return g->kind == TP_GEO_QUINTIC ? g->u.q.b[5] : g->kind == TP_GEO_ARC ? g->u.arc.end
+                                                                          : g->u.line.end;
+    if (s <= 0.0)
+        return g->kind == TP_GEO_QUINTIC ? g->u.q.b[0] : g->kind == TP_GEO_ARC ? g->u.arc.start
+                                                                          : g->u.line.start;
+    switch (g->kind) {
+    case TP_GEO_ARC:
+        return arc_jet(g, s).p;
+    case TP_GEO_QUINTIC:
+        return tp_quintic_point(&g->u.q, s / g->len);
+    default:
+        if (s > 0.5 * g->len)
+            return tp_vec_axpy(&g->u.line.end, s - g->len, &g->u.line.dir);
+        return tp_vec_axpy(&g->u.line.start, s, &g->u.line.dir);
+    }
+}
+
+/* Line bounds: constant direction, no curvature. */
+static void line_bounds(const tp_geo_t *g, tp_bounds_t *b)
+{
+    memset(b, 0, sizeof(*b));
+    for (int i = 0; i < TP_NAX; i++)
+        b->d1[i] = fabs(g->u.line.dir.x[i]);
+    b->d1[TP_PATH_AX] = 1.0;
+}
+
+/* Arc bounds: the rotating part bounded per axis by its in-plane share, plus the linear parts. */
+static void arc_bounds(const tp_geo_t *g, tp_bounds_t *b)
+{
+    const tp_arc_t *a = &g->u.arc;
+    double om = a->sweep / g->len, rho = fabs(a->r1 - a->r0) / g->len, r = fmax(a->r0, a->r1);
+    double w1 = hypot(rho, r * om), w2 = hypot(2.0 * rho * om, r * om * om);
+    double w3 = hypot(3.0 * rho * om * om, r * om * om * om), ax = fabs(a->h) / g->len;
+    memset(b, 0, sizeof(*b));
+    for (int i = 0; i < 3; i++) {
+        double f = hypot(a->e1[i], a->e2[i]);
+        b->d1[i] = w1 * f + fabs(a->n[i]) * ax;
+        b->d2[i] = w2 * f;
+        b->d3[i] = w3 * f;
+    }
+    for (int i = 3; i < TP_NAX; i++)
+        b->d1[i] = fabs(a->end.x[i] - a->start.x[i]) / g->len;
+    b->d1[TP_PATH_AX] = hypot(w1, ax);
+    b->d2[TP_PATH_AX] = w2;
+    b->d3[TP_PATH_AX] = w3;
+}
+
+/* de Casteljau restriction of a degree-n polygon to [u0, u1]. */
+static void bez_restrict(const tp_vec_t *c, int n, double u0, double u1, tp_vec_t *out)
+{
+    tp_vec_t tmp[6];
+    /* split at u1, keep the left part; then split that at u0/u1, keep the right part */
+    for (int k = 0; k <= n; k++)
+        tmp[k] = c[k];
+    for (int r = 1; r <= n; r++) {
+        out[r - 1] = tmp[0];
+        for (int k = 0; k <= n - r; k++)
+            for (int i = 0; i < TP_NAX; i++)
+                tmp[k].x[i] += u1 * (tmp[k + 1].x[i] - tmp[k].x[i]);
+    }
+    out[n] = tmp[0];
+    double t = u1 > 0.0 ? u0 / u1 : 0.0;
+    for (int k = 0; k <= n; k++)
+        tmp[k] = out[k];
+    for (int r = 1; r <= n; r++) {
+        out[n - r + 1] = tmp[n - r + 1];
+        for (int k = 0; k <= n - r; k++)
+            for (int i = 0; i < TP_NAX; i++)
+                tmp[k].x[i] += t * (tmp[k + 1].x[i] - tmp[k].x[i]);
+    }
+    out[0] = tmp[0];
+}
+
+/* Largest |component| and metric norm over a polygon, scaled. */
+static void poly_max(const tp_vec_t *c, int n, double scale, tp_metric_t m, double *out)
+{
+    int first = tp_metric_first(m);
+    for (int i = 0; i < TP_NBOUND; i++)
+        out[i] = 0.0;
+    for (int k = 0; k <= n; k++) {
+        for (int i = 0; i < TP_NAX; i++)
+            out[i] = fmax(out[i], fabs(c[k].x[i]) * scale);
+        out[TP_PATH_AX] = fmax(out[TP_PATH_AX], tp_vec_norm3(&c[k], first) * scale);
+    }
+}
+
+/* Quintic bounds over [s0, s1] from the restricted derivative polygons (convex hull). */
+static void quintic_bounds(const tp_geo_t *g, double s0, double s1, tp_bounds_t *b)
+{
+    tp_vec_t d1[5], d2[4], d3[3], r[6];
+    double u0 = s0 / g->len, u1 = s1 / g->len, L = g->len;
+    bez_diff(g->u.q.b, 5, d1);
+    bez_diff(d1, 4, d2);
+    bez_diff(d2, 3, d3);
+    bez_restrict(d1, 4, u0, u1, r);
+    poly_max(r, 4, 1.0 / L, g->metric, b->d1);
+    bez_restrict(d2, 3, u0, u1, r);
+    poly_max(r, 3, 1.0 / (L * L), g->metric, b->d2);
+    bez_restrict(d3, 2, u0, u1, r);
+    poly_max(r, 2, 1.0 / (L * L * L), g->metric, b->d3);
+}
+
+/* Derivative bounds over [s0, s1]. */
+void tp_geo_bounds(const tp_geo_t *g, double s0, double s1, tp_bounds_t *b)
+{
+    switch (g->kind) {
+    case TP_GEO_ARC:
+        arc_bounds(g, b);
+        break;
+    case TP_GEO_QUINTIC:
+        quintic_bounds(g, s0, s1, b);
+        break;
+    default:
+        line_bounds(g, b);
+        break;
+    }
+}
+
+/* Length of a quintic in a metric: Gauss-Legendre with 8 nodes on |dp/du|. */
+double tp_quintic_length(const tp_quintic_t *q, tp_metric_t m)
+{
+    static const double xg[4] = {0.1834346424956498, 0.5255324099163290, 0.7966664774136267,
+                                 0.9602898564975363};
+    static const double wg[4] = {0.3626837833783620, 0.3137066458778873, 0.2223810344533745,
+                                 0.1012285362903763};
+    tp_vec_t d1[5];
+    double w[5], sum = 0.0;
+    int first = tp_metric_first(m);
+    bez_diff(q->b, 5, d1);
+    for (int k = 0; k < 8; k++) {
+        double u = 0.5 + 0.5 * (k < 4 ? -xg[k] : xg[k - 4]);
+        bernstein(4, u, w);
+        tp_vec_t d = bez_sum(d1, w, 4);
+        sum += (k < 4 ? wg[k] : wg[k - 4]) * tp_vec_norm3(&d, first);
+    }
+    return 0.5 * sum;
+}
+
+/* G2 Hermite quintic: p(0)=a.p, p'(0)=lam a.d1, p''(0)=lam^2 a.d2, likewise at 1. */
+void tp_quintic_hermite(tp_quintic_t *q, const tp_jet_t *a, const tp_jet_t *b, double lam)
+{
+    double l2 = lam * lam;
+    for (int i = 0; i < TP_NAX; i++) {
+        q->b[0].x[i] = a->p.x[i];
+        q->b[1].x[i] = a->p.x[i] + lam * a->d1.x[i] / 5.0;
+        q->b[2].x[i] = a->p.x[i] + 2.0 * lam * a->d1.x[i] / 5.0 + l2 * a->d2.x[i] / 20.0;
+        q->b[5].x[i] = b->p.x[i];
+        q->b[4].x[i] = b->p.x[i] - lam * b->d1.x[i] / 5.0;
+        q->b[3].x[i] = b->p.x[i] - 2.0 * lam * b->d1.x[i] / 5.0 + l2 * b->d2.x[i] / 20.0;
+    }
+}

@@ -1,0 +1,79 @@
+/* tp_geom.h: path geometry: lines, arcs (helix, spiral, extra axes) and quintic blends, parameterised by length. */
+#ifndef TP_GEOM_H
+#define TP_GEOM_H
+
+#include "tp_vec.h"
+
+/* Pseudo-axis index of the path itself (the length metric) in derivative bounds. */
+#define TP_PATH_AX TP_NAX
+#define TP_NBOUND (TP_NAX + 1)
+
+typedef enum tp_geo_kind {
+    TP_GEO_LINE = 0,
+    TP_GEO_ARC = 1,
+    TP_GEO_QUINTIC = 2
+} tp_geo_kind_t;
+
+/* Straight move: p(s) = start + dir s, s in [0, len]. */
+typedef struct tp_line {
+    tp_vec_t start, end, dir;
+} tp_line_t;
+
+/* Circle, helix or spiral in XYZ; A B C U V W move linearly with the angle. */
+typedef struct tp_arc {
+    tp_vec_t start, end;
+    double c[3];                /* centre */
+    double e1[3], e2[3];        /* plane basis: e1 towards the start, e2 = normal x e1 */
+    double n[3];                /* unit normal (counter-clockwise about it) */
+    double r0, r1;              /* radius at start and end */
+    double sweep;               /* angle swept, > 0 */
+    double h;                   /* displacement along the normal */
+} tp_arc_t;
+
+/* Quintic Bezier blend: u = s / len in [0, 1]. */
+typedef struct tp_quintic {
+    tp_vec_t b[6];
+} tp_quintic_t;
+
+typedef struct tp_geo {
+    tp_geo_kind_t kind;
+    tp_metric_t metric;         /* axes that measure len */
+    double len;                 /* length in the metric (for blends: the parameter scale) */
+    union {
+        tp_line_t line;
+        tp_arc_t arc;
+        tp_quintic_t q;
+    } u;
+} tp_geo_t;
+
+/* Derivatives with respect to length at a point. */
+typedef struct tp_jet {
+    tp_vec_t p, d1, d2;
+} tp_jet_t;
+
+/* Largest |d1|, |d2|, |d3| per axis over a parameter range; index TP_PATH_AX is the metric norm. */
+typedef struct tp_bounds {
+    double d1[TP_NBOUND];
+    double d2[TP_NBOUND];
+    double d3[TP_NBOUND];
+} tp_bounds_t;
+
+/* Make a line from start to end; 0, or -1 when it has no length in any metric. */
+int tp_geo_line(tp_geo_t *g, const tp_vec_t *start, const tp_vec_t *end);
+/* Make an arc; turn < 0 reverses the direction (extra turns -turn-1); 0 or -1 when degenerate. */
+int tp_geo_arc(tp_geo_t *g, const tp_vec_t *start, const tp_vec_t *end, const double center[3],
+               const double normal[3], int turn);
+/* Position at length s (s clamped to [0, len]; the exact end point at len). */
+tp_vec_t tp_geo_eval(const tp_geo_t *g, double s);
+/* Position, first and second derivative at s. */
+tp_jet_t tp_geo_jet(const tp_geo_t *g, double s);
+/* Derivative bounds over [s0, s1]. */
+void tp_geo_bounds(const tp_geo_t *g, double s0, double s1, tp_bounds_t *b);
+/* Length of a quintic in metric m (8-point Gauss-Legendre). */
+double tp_quintic_length(const tp_quintic_t *q, tp_metric_t m);
+/* Quintic G2 Hermite: position, unit-length tangent and curvature vector at both ends, scale lam. */
+void tp_quintic_hermite(tp_quintic_t *q, const tp_jet_t *a, const tp_jet_t *b, double lam);
+/* Point of a quintic at u in [0, 1]. */
+tp_vec_t tp_quintic_point(const tp_quintic_t *q, double u);
+
+#endif

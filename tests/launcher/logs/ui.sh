@@ -1,0 +1,3 @@
+#!/bin/bash
+# display: prints to the (redirected) stdout
+echo "display output"

@@ -1,0 +1,3 @@
+#!/bin/bash
+# display: says it ran
+echo "display ran"

@@ -1,0 +1,3 @@
+#!/bin/bash
+# preview_helpers and rs274.interpret (see test.py)
+python3 test.py
