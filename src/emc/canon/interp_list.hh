@@ -44,6 +44,8 @@ public:
     bool empty() const { return items_.empty(); }
     size_t size() const { return items_.size(); }
     const QueuedMsg &front() const { return items_.front(); }
+    // Append a copy of an item taken from a list.
+    void append_copy(const QueuedMsg &q) { items_.push_back(q); ++appended_; }
     QueuedMsg pop() { QueuedMsg q = items_.front(); items_.pop_front(); return q; }
     void clear() { items_.clear(); }
     // Drop everything appended after the first `keep` items (used to discard a skipped line's output).

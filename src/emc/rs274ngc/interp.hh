@@ -119,6 +119,8 @@ public:
     void set_user_m_handler(UserMHandler fn) override { user_m_ = std::move(fn); }
     // executable M<m> from PROGRAM_PREFIX, then USER_M_PATH; "" when none
     std::string find_user_m(int m) const;
+    // start in the machine's units (task) instead of mm (rs274's behaviour)
+    void set_start_in_machine_units(bool on) { start_in_machine_units_ = on; }
     // mark the process as task (#<_task> = 1)
     void set_task(bool t) override { task_ = t; }
     // ProfileSource: evaluated blocks of a subroutine
@@ -299,6 +301,7 @@ private:
     int skip_start_ = 0;
     bool block_delete_ = false;
     bool task_ = false;
+    bool start_in_machine_units_ = false;
     bool file_open_ = false;
     bool eof_error_ = false;
     double value_ = 0, value_returned_ = 0;

@@ -151,7 +151,8 @@ void Interp::o_call(Block &b)
     SubDef def;
     if (!find_sub(b.o_name, def)) {
         std::string label = isdigit((unsigned char)b.o_name[0]) ? b.o_name : "<" + b.o_name + ">";
-        throw InterpError("EOF in file:" + calls_.back().file->path + " seeking o-word: o" +
+        const auto &file = calls_.back().file;
+        throw InterpError("EOF in file:" + (file ? file->path : std::string()) + " seeking o-word: o" +
                           label + " from line: " + std::to_string(s_.sequence_number));
     }
     push_call(def, b.o_name, b.o_args, false);
@@ -166,7 +167,7 @@ bool Interp::find_sub(const std::string &name, SubDef &def)
     CallFrame &f = calls_.back();
     std::string n;
     OKind k;
-    for (size_t i = f.pos; i < f.file->lines.size(); i++) {
+    for (size_t i = f.pos; f.file && i < f.file->lines.size(); i++) {
         if (peek_oword(f.file->lines[i], n, k) && k == O_SUB && n == name) {
             def = SubDef{f.file, i};
             subs_[name] = def;

@@ -23,6 +23,7 @@ bool persistent(int n)
 void Interp::read_var_file()
 {
     INTERP_FRAME();
+    if (var_file_.empty()) return;
     FILE *f = fopen(var_file_.c_str(), "r");
     if (!f) return;
     char line[512];
@@ -50,6 +51,7 @@ void Interp::read_var_file()
 void Interp::write_var_file()
 {
     INTERP_FRAME();
+    if (var_file_.empty()) return;
     std::string tmp = var_file_ + ".new", bak = var_file_ + ".bak";
     FILE *f = fopen(tmp.c_str(), "w");
     if (!f) return;
