@@ -178,6 +178,7 @@ private:
     int orient_spindle_ = 0;
     pid_t system_pid_ = -1;
     bool estop_seen_ = true;
+    bool unhome_pending_ = false;     // UNHOME -2 waits for motion to report itself disabled
     int traj_mode_ = EMC_TRAJ_MODE_FREE;   // motion mode commanded (or reported once echoed)
 };
 

@@ -84,6 +84,7 @@ void Task::set_state(int state)
     case EMC_TASK_STATE_ON:
         if (st_.io.aux.estop) break;
         send(MotionTranslator::make(EMCMOT_ENABLE));
+        if (traj_mode_ != EMC_TRAJ_MODE_FREE) set_traj_mode(traj_mode_);
         io_.coolant(false, false);
         machine_on_ = true;
         break;
@@ -104,8 +105,14 @@ void Task::set_state(int state)
     }
 }
 
+// UNHOME -2 right after DISABLE; when motion is still enabled it is sent once motion reports
+// itself disabled (motion refuses to unhome an enabled coordinated machine).
 void Task::send_unhome_volatile(MotionCommands &cmds)
 {
+    if (mst_.enabled) {
+        unhome_pending_ = true;
+        return;
+    }
     emcmot_command_t c = MotionTranslator::make(EMCMOT_JOINT_UNHOME);
     c.joint = EMCMOT_JOINT_VOLATILE;
     cmds.push_back(c);
@@ -177,5 +184,13 @@ void Task::estop_sync()
         reset_plan();
         interp_synch();
     }
-    if (echoed) traj_mode_ = mst_.coord ? EMC_TRAJ_MODE_COORD : mst_.teleop ? EMC_TRAJ_MODE_TELEOP : EMC_TRAJ_MODE_FREE;
+    if (echoed && unhome_pending_ && !mst_.enabled) {
+        unhome_pending_ = false;
+        MotionCommands cmds;
+        send_unhome_volatile(cmds);
+        send(cmds);
+    }
+    // a disabled machine keeps its mode (E-stop in AUTO stays AUTO)
+    if (echoed && mst_.enabled)
+        traj_mode_ = mst_.coord ? EMC_TRAJ_MODE_COORD : mst_.teleop ? EMC_TRAJ_MODE_TELEOP : EMC_TRAJ_MODE_FREE;
 }
