@@ -37,6 +37,13 @@ double TaskCanon::mm_per_unit() const
     }
 }
 
+// Machine units per program unit; exactly 1 when program and machine units agree.
+double TaskCanon::unit_factor() const
+{
+    double f = mm_per_unit() * cfg_.linear_units;
+    return std::fabs(f - 1.0) < 1e-9 ? 1.0 : f;
+}
+
 // A program pose converted to machine units, no offsets applied.
 static EmcPose scaled(const CanonPose &p, double lin, double ang)
 {
@@ -50,7 +57,7 @@ static EmcPose scaled(const CanonPose &p, double lin, double ang)
 // Offsets given in program units, as machine units.
 EmcPose TaskCanon::offsets_pose(const CanonPose &p) const
 {
-    return scaled(p, mm_per_unit() * cfg_.linear_units, cfg_.angular_units);
+    return scaled(p, unit_factor(), cfg_.angular_units);
 }
 
 // machine = Rot_Z(rotation)·(p + g92) + g5x + tool offset (canon.md sec. 1).
@@ -74,7 +81,7 @@ EmcPose TaskCanon::to_machine(const CanonPose &p) const
 // The inverse of to_machine.
 CanonPose TaskCanon::to_program(const EmcPose &m) const
 {
-    double lin = mm_per_unit() * cfg_.linear_units, ang = cfg_.angular_units;
+    double lin = unit_factor(), ang = cfg_.angular_units;
     double x = m.tran.x - g5x_.tran.x - tool_.tran.x, y = m.tran.y - g5x_.tran.y - tool_.tran.y;
     double r = -rotation_ * M_PI / 180.0;
     CanonPose p;

@@ -168,8 +168,9 @@ public:
 
 private:
     double mm_per_unit() const;
-    double to_mu(double program_len) const { return program_len * mm_per_unit() * cfg_.linear_units; }
-    double from_mu(double mu) const { return mu / (mm_per_unit() * cfg_.linear_units); }
+    double unit_factor() const;
+    double to_mu(double program_len) const { return program_len * unit_factor(); }
+    double from_mu(double mu) const { return mu / unit_factor(); }
     double ang_to_mu(double deg) const { return deg * cfg_.angular_units; }
     EmcPose offsets_pose(const CanonPose &p) const;
     state_tag_t tag() const;

@@ -80,7 +80,8 @@ bool Task::cycle()
     io_.update(st_.io);
     estop_sync();
     if (motion_ready_) {
-        const NMLmsg *msg = cmd_ch_->read();
+        // like LinuxCNC, a command is read only once motion has handled the previous one's
+        const NMLmsg *msg = motion_echoed() ? cmd_ch_->read() : nullptr;
         if (msg) {
             st_.echo_serial_number = st_.task.echo_serial_number = msg->serial_number;
             st_.command_type = st_.task.command_type = msg->type;

@@ -70,6 +70,7 @@ public:
     void set_block_delete(bool on);
     void set_debug(int debug) { st_.debug = debug; }
     bool all_homed() const;
+    bool check_io_index(const NMLmsg &msg);
     bool jogging() const { return mst_.jogging_active != 0; }
     const MachineConfig &config() const { return cfg_; }
     EMC_STAT &stat() { return st_; }
@@ -83,6 +84,7 @@ private:
     void forward_motion_errors();
     void check_rejections();
     bool motion_done() const;
+    bool motion_echoed() const;
     // plan (task_plan.cc)
     void plan_cycle();
     void read_ahead();

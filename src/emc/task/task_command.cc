@@ -37,7 +37,10 @@ const M &as(const NMLmsg &msg) { return *emc_msg_as<M>(&msg); }
 void op_error(Task &t, const NMLmsg &m) { t.operator_message(m.type, as<EMC_OPERATOR_ERROR>(m).error); }
 void op_text(Task &t, const NMLmsg &m) { t.operator_message(m.type, as<EMC_OPERATOR_TEXT>(m).text); }
 void op_display(Task &t, const NMLmsg &m) { t.operator_message(m.type, as<EMC_OPERATOR_DISPLAY>(m).display); }
-void motion(Task &t, const NMLmsg &m) { t.issue_motion(m); }
+void motion(Task &t, const NMLmsg &m)
+{
+    if (t.check_io_index(m)) t.issue_motion(m);
+}
 void nothing(Task &, const NMLmsg &) {}
 void set_debug(Task &t, const NMLmsg &m) { t.set_debug(as<EMC_SET_DEBUG>(m).debug); }
 void set_state(Task &t, const NMLmsg &m) { t.set_state(as<EMC_TASK_SET_STATE>(m).state); }
@@ -179,6 +182,31 @@ static unsigned allowed(const Task &t, int interp, std::string &fmt)
     case EMC_TASK_INTERP_WAITING: fmt = "can't do that (%s) in auto mode with the interpreter waiting"; return AUTO_WAITING;
     default: fmt = "can't do that (%s) in auto mode with the interpreter idle"; return AUTO_IDLE;
     }
+}
+
+// Spindle numbers and motion I/O indexes outside the configuration are refused before motion
+// sees them (LinuxCNC's texts: a spindle is a failed command, an I/O index only an error).
+bool Task::check_io_index(const NMLmsg &msg)
+{
+    int spindle = -1;
+    if (msg.type >= EMC_SPINDLE_ON_TYPE && msg.type <= EMC_SPINDLE_WAIT_ORIENT_COMPLETE_TYPE)
+        spindle = static_cast<const EMC_SPINDLE_CMD_MSG &>(msg).spindle;
+    if (spindle >= cfg_.spindles || spindle < -1) {
+        reject("Attempt to start non-existent spindle");
+        return false;
+    }
+    int index = -1, limit = 0;
+    const char *what = "";
+    if (auto *d = emc_msg_as<EMC_MOTION_SET_DOUT>(&msg)) { index = d->index; limit = mst_.num_dio; what = "num_dio/EMCMOT_MAX_DIO"; }
+    if (auto *a = emc_msg_as<EMC_MOTION_SET_AOUT>(&msg)) { index = a->index; limit = mst_.num_aio; what = "num_aio/EMCMOT_MAX_AIO"; }
+    if (index >= 0 && index >= limit) {
+        char text[LINELEN];
+        snprintf(text, sizeof text, "ERROR: index out of range, %d not in [0..%d] (increase %s=%d)\n", index, limit,
+                 what, EMCMOT_MAX_DIO);
+        operator_error(text);
+        return false;
+    }
+    return true;
 }
 
 // A new command from emcCommand: accept (run its handler) or reject with LinuxCNC's text.

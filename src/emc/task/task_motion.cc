@@ -120,6 +120,12 @@ void Task::check_rejections()
     }
 }
 
+// Motion has handled every command task queued.
+bool Task::motion_echoed() const
+{
+    return !mot_ || (int32_t)(mst_.echo.serial - last_serial_) >= 0;
+}
+
 // Everything queued was handled and the planner is empty and in position.
 bool Task::motion_done() const
 {
