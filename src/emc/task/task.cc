@@ -77,6 +77,7 @@ bool Task::cycle()
         return false;
     }
     read_motion();
+    forward_motion_errors();
     io_.update(st_.io);
     estop_sync();
     if (motion_ready_) {
