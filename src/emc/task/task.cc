@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 #include <ctime>
+#include <unistd.h>
 
 double task_now()
 {
@@ -128,6 +129,7 @@ void Task::shutdown()
 {
     if (motion_ready_ && emcmot_owner_alive(mot_)) send(MotionTranslator::make(EMCMOT_DISABLE));
     if (interp_) interp_->exit();
+    if (!remote_path_.empty()) unlink(remote_path_.c_str());
     std::string err = io_.save();
     if (!err.empty()) fprintf(stderr, "milltask: %s\n", err.c_str());
     inihal_.destroy();

@@ -53,6 +53,7 @@ public:
     void task_abort();
     void issue_motion(const NMLmsg &msg);
     void plan_open(const std::string &file);
+    void plan_open_msg(const EMC_TASK_PLAN_OPEN &m);
     void plan_close();
     void plan_run(int line);
     void plan_pause();
@@ -156,6 +157,8 @@ private:
     bool optional_stop_ = true, block_delete_ = true;
     // program / MDI
     std::string file_;
+    std::string remote_name_, remote_path_;   // a program arriving in PLAN_OPEN chunks
+    long remote_size_ = 0, remote_received_ = 0;
     bool file_open_ = false;
     int start_line_ = 0;              // run from line: output of earlier main-program lines dropped
     bool skipping_ = false;

@@ -50,7 +50,7 @@ void override_limits(Task &t, const NMLmsg &m)
 {
     if (t.task_mode() == EMC_TASK_MODE_MANUAL) t.issue_motion(m);
 }
-void plan_open(Task &t, const NMLmsg &m) { t.plan_open(as<EMC_TASK_PLAN_OPEN>(m).file); }
+void plan_open(Task &t, const NMLmsg &m) { t.plan_open_msg(as<EMC_TASK_PLAN_OPEN>(m)); }
 void plan_close(Task &t, const NMLmsg &) { t.plan_close(); }
 void plan_init(Task &t, const NMLmsg &) { t.plan_init(); }
 void plan_synch(Task &t, const NMLmsg &) { t.plan_synch(); }

@@ -1,7 +1,11 @@
 // task_plan.cc: programs (open, run from line, readahead, pause/resume/step) and the MDI queue (nml.md sec. 4).
 #include "task.hh"
 
+#include <cerrno>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <unistd.h>
 
 namespace {
 const int INTERP_ERRCODE = 5;        // LinuxCNC's INTERP_ERROR as reported in interpreter_errcode
@@ -42,6 +46,42 @@ void Task::plan_open(const std::string &file)
     file_ = file;
     file_open_ = true;
     emc_set_text(st_.task.file, file.c_str());
+}
+
+// PLAN_OPEN with remote_buffersize > 0: a remote client sends the file in chunks; task keeps
+// them in a temporary copy and opens it once remote_filesize bytes arrived (task.file = the name sent).
+void Task::plan_open_msg(const EMC_TASK_PLAN_OPEN &m)
+{
+    if (m.remote_buffersize <= 0) {
+        plan_open(m.file);
+        return;
+    }
+    if (m.remote_buffersize > EMC_TASK_PLAN_OPEN_REMOTE_BUFFER || m.remote_filesize < 0) {
+        reject(std::string("can't open ") + m.file + ": bad remote chunk");
+        return;
+    }
+    if (remote_name_ != m.file || remote_received_ >= remote_size_) {
+        const char *tmp = getenv("TMPDIR");
+        std::string base = m.file;
+        size_t slash = base.rfind('/');
+        if (slash != std::string::npos) base = base.substr(slash + 1);
+        remote_path_ = std::string(tmp && *tmp ? tmp : "/tmp") + "/openemc-remote-" + std::to_string(getpid()) + "-" + base;
+        remote_name_ = m.file;
+        remote_size_ = m.remote_filesize;
+        remote_received_ = 0;
+        unlink(remote_path_.c_str());
+    }
+    FILE *f = fopen(remote_path_.c_str(), "ab");
+    if (!f || fwrite(m.remote_buffer, 1, (size_t)m.remote_buffersize, f) != (size_t)m.remote_buffersize) {
+        if (f) fclose(f);
+        reject("can't open " + remote_path_ + ": " + strerror(errno));
+        return;
+    }
+    fclose(f);
+    remote_received_ += m.remote_buffersize;
+    if (remote_received_ < remote_size_) return;
+    plan_open(remote_path_);
+    if (file_open_) emc_set_text(st_.task.file, m.file);
 }
 
 void Task::plan_close()
