@@ -174,7 +174,7 @@ private:
     double ang_to_mu(double deg) const { return deg * cfg_.angular_units; }
     EmcPose offsets_pose(const CanonPose &p) const;
     state_tag_t tag() const;
-    void queue_line(int line, const EmcPose &end, int type, double feed_vel);
+    void queue_line(int line, const EmcPose &end, int type, double feed_vel, const state_tag_t *t = nullptr);
     void feed_chain(int line, const EmcPose &end);
     bool chain_accepts(const EmcPose &end) const;
     double move_feed_vel() const;
@@ -217,6 +217,7 @@ private:
     EmcPose chain_start_ = {};
     EMC_TRAJ_LINEAR_MOVE chain_move_;
     int chain_line_ = 0;
+    state_tag_t chain_tag_ = {};      // the tag of the last point merged into the chain
     CanonBlockNeeds needs_;
     FILE *log_ = nullptr;
 };

@@ -56,7 +56,7 @@ double TaskCanon::move_feed_vel() const
 }
 
 // Queue one straight move of motion type `type` to end; feed_vel < 0 = rapid.
-void TaskCanon::queue_line(int line, const EmcPose &end, int type, double feed_vel)
+void TaskCanon::queue_line(int line, const EmcPose &end, int type, double feed_vel, const state_tag_t *t)
 {
     double d[CANON_AXES];
     pose_delta(end_, end, d);
@@ -72,7 +72,7 @@ void TaskCanon::queue_line(int line, const EmcPose &end, int type, double feed_v
     else if (rotary_only(d)) vel = feed_prog_ / 60.0 * cfg_.angular_units;
     m.vel = vel < lim.vel ? vel : lim.vel;
     m.feed_mode = feed_mode_;
-    m.tag = tag();
+    m.tag = t ? *t : tag();
     m.tag.line_number = line;
     list_.append(m, line);
     end_ = end;
@@ -95,6 +95,7 @@ void TaskCanon::feed_chain(int line, const EmcPose &end)
     if (!chain_.empty() && chain_accepts(end)) {
         chain_.push_back(end);
         chain_line_ = line;
+        chain_tag_ = tag();
         return;
     }
     flush();
@@ -105,6 +106,7 @@ void TaskCanon::feed_chain(int line, const EmcPose &end)
     chain_start_ = end_;
     chain_.push_back(end);
     chain_line_ = line;
+    chain_tag_ = tag();
 }
 
 // The held chain extended to end stays within the tolerance of one straight line.
@@ -122,7 +124,7 @@ void TaskCanon::flush()
     EmcPose end = chain_.back();
     chain_.clear();
     end_ = chain_start_;
-    queue_line(chain_line_, end, EMC_MOTION_TYPE_FEED, move_feed_vel());
+    queue_line(chain_line_, end, EMC_MOTION_TYPE_FEED, move_feed_vel(), &chain_tag_);
 }
 
 // Plane axis indexes (first, second, normal) of a canon plane.

@@ -98,6 +98,7 @@ private:
     void interp_synch();
     void run_abort_command();
     void run_startup_code();
+    void restore_tag(const state_tag_t &t);
     void drop_output_since(size_t keep);
     // execute (task_execute.cc)
     void execute_cycle();

@@ -236,3 +236,29 @@ void Task::spindle_speed(const EMC_SPINDLE_SPEED &m)
     c.css_xoffset = m.xoffset;
     send(c);
 }
+
+// After an abort, the interpreter's modal state goes back to what the executing segment was
+// programmed with (its state tag), not what readahead had reached (LinuxCNC's state restore).
+void Task::restore_tag(const state_tag_t &t)
+{
+    if (!(t.flags & STATE_TAG_VALID) || !interp_) return;
+    InterpState &s = interp_->state();
+    const int32_t *g = t.gcodes;
+    s.motion_mode = g[1];
+    s.plane = g[3] == 190 ? CANON_PLANE_YZ : g[3] == 180 ? CANON_PLANE_XZ : g[3] == 171 ? CANON_PLANE_UV
+            : g[3] == 191 ? CANON_PLANE_VW : g[3] == 181 ? CANON_PLANE_UW : CANON_PLANE_XY;
+    s.distance_incremental = g[6] == 910;
+    s.feed_mode = g[7] == 930 ? FEED_INVERSE_TIME : g[7] == 950 ? FEED_UNITS_PER_REV : FEED_UNITS_PER_MINUTE;
+    s.retract = g[10] == 980 ? RETRACT_OLD_Z : RETRACT_R_PLANE;
+    s.control_mode = g[11] == 611 ? CANON_EXACT_STOP : g[11] == 610 ? CANON_EXACT_PATH : CANON_CONTINUOUS;
+    s.ijk_absolute = g[14] == 901;
+    s.lathe_diameter = g[15] == 70;
+    s.feed_rate = t.settings[1];
+    s.speed[0] = t.settings[2];
+    s.tolerance = t.settings[3];
+    s.naivecam_tolerance = t.settings[4];
+    canon_->select_plane(s.plane);
+    canon_->set_motion_control_mode(s.control_mode, s.tolerance);
+    canon_->set_naivecam_tolerance(s.naivecam_tolerance);
+    canon_->set_feed_rate(s.feed_rate);
+}

@@ -41,6 +41,10 @@ bool Task::attach_motion()
     send(cmds);
     motion_ready_ = true;
     read_motion();
+    // the interpreter is initialised again now that motion answers its queries; as in LinuxCNC
+    // this rewrites the parameter file a second time (so <PARAMETER_FILE>.bak exists after start-up)
+    plan_init();
+    run_startup_code();
     set_state(EMC_TASK_STATE_ESTOP);
     set_mode(EMC_TASK_MODE_MANUAL);
     return true;

@@ -44,6 +44,8 @@ void Task::reset_plan()
 // EMC_TASK_ABORT and everything that stops a program: motion, spindles, io, the plan.
 void Task::task_abort()
 {
+    state_tag_t tag = mst_.exec_tag;
+    bool restore = interp_state_ != EMC_TASK_INTERP_IDLE || mdi_active_;
     MotionCommands cmds;
     xl_.motion_abort(cmds);
     xl_.motion_abort(cmds);
@@ -51,6 +53,7 @@ void Task::task_abort()
     send(cmds);
     io_.abort();
     reset_plan();
+    if (restore) restore_tag(tag);
     run_abort_command();
     interp_synch();
 }
