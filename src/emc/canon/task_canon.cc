@@ -24,6 +24,8 @@ void TaskCanon::init_canon()
     plane_ = CANON_PLANE_XY;
     feed_ = 0;
     feed_mode_ = 0;
+    motion_mode_ = CANON_CONTINUOUS;
+    tolerance_ = naivecam_tol_ = 0;
     end_ = machine_.position();
 }
 

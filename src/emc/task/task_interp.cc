@@ -70,17 +70,21 @@ bool Task::init_interp(std::string *error)
     return true;
 }
 
-// Run [RS274NGC]RS274NGC_STARTUP_CODE: its settings stay, its actions are dropped (machine in E-stop).
+// Run [RS274NGC]RS274NGC_STARTUP_CODE: its settings take effect, its actions are dropped (machine in E-stop).
 void Task::run_startup_code()
 {
     if (cfg_.startup_code.empty()) return;
-    size_t keep = list_.size();
+    list_.clear();
+    size_t keep = 0;
     InterpStatus st = interp_->execute_line(cfg_.startup_code);
     for (int n = 0; st != INTERP_ERROR && interp_->state().call_level > 0 && n < 100000; n++)
         st = interp_->execute_next();
     if (st == INTERP_ERROR) operator_error(interp_->error_text());
     canon_->take_needs();
     drop_output_since(keep);
+    // the settings it made (offsets, tool length offset, path control) take effect now
+    while (!list_.empty()) issue(list_.pop());
+    exec_state_ = EMC_TASK_EXEC_DONE;
 }
 
 // ON_ABORT_COMMAND: run the O-call after an abort; its output runs like MDI output.
