@@ -99,6 +99,7 @@ private:
     void run_abort_command();
     void run_startup_code();
     void restore_tag(const state_tag_t &t);
+    void restore_origin(int code);
     void drop_output_since(size_t keep);
     // execute (task_execute.cc)
     void execute_cycle();

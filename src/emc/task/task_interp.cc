@@ -261,8 +261,33 @@ void Task::restore_tag(const state_tag_t &t)
     s.speed[0] = t.settings[2];
     s.tolerance = t.settings[3];
     s.naivecam_tolerance = t.settings[4];
+    restore_origin(g[8]);
     canon_->select_plane(s.plane);
     canon_->set_motion_control_mode(s.control_mode, s.tolerance);
     canon_->set_naivecam_tolerance(s.naivecam_tolerance);
     canon_->set_feed_rate(s.feed_rate);
+}
+
+// The coordinate system of a state tag (G54 = 540 ... G59.3 = 593) made active again.
+void Task::restore_origin(int code)
+{
+    static const int codes[] = {540, 550, 560, 570, 580, 590, 591, 592, 593};
+    int index = 0;
+    for (int i = 0; i < 9; i++)
+        if (codes[i] == code) index = i + 1;
+    InterpState &s = interp_->state();
+    if (index == 0 || index == s.origin_index) return;
+    s.origin_index = index;
+    s.params[5220] = index;
+    double k = s.machine_to_program();
+    CanonPose p;
+    double *f[9] = {&p.x, &p.y, &p.z, &p.a, &p.b, &p.c, &p.u, &p.v, &p.w};
+    for (int i = 0; i < 9; i++) {
+        bool linear = i < 3 || i > 5;
+        s.origin_offset[i] = s.params[5201 + 20 * index + i] * (linear ? k : 1.0);
+        *f[i] = s.origin_offset[i];
+    }
+    s.rotation_xy = s.params[5210 + 20 * index];
+    canon_->set_g5x_offset(index, p);
+    canon_->set_xy_rotation(s.rotation_xy);
 }
