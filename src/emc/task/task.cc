@@ -83,7 +83,7 @@ bool Task::cycle()
     estop_sync();
     if (motion_ready_) {
         // like LinuxCNC, a command is read only once motion has handled the previous one's
-        const NMLmsg *msg = motion_echoed() ? cmd_ch_->read() : nullptr;
+        const NMLmsg *msg = command_ready() ? cmd_ch_->read() : nullptr;
         if (msg) {
             st_.echo_serial_number = st_.task.echo_serial_number = msg->serial_number;
             st_.command_type = st_.task.command_type = msg->type;
@@ -111,6 +111,17 @@ bool Task::cycle()
     update_status();
     if (exec_error_ && !command_failed_) exec_error_ = false;
     return true;
+}
+
+// A command is read once motion handled the previous one's; a joint home request also waits
+// for a homing in progress to end (homemod runs one homing at a time, so back-to-back
+// home(0), home(1), home(2) would otherwise be refused).
+bool Task::command_ready()
+{
+    if (!motion_echoed()) return false;
+    if (!mst_.homing_active) return true;
+    const NMLmsg *next = cmd_ch_->peek();
+    return !next || next->type != EMC_JOINT_HOME_TYPE;
 }
 
 // Sleep until the next period; a new command wakes task early.

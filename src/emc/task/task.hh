@@ -86,6 +86,7 @@ private:
     void check_rejections();
     bool motion_done() const;
     bool motion_echoed() const;
+    bool command_ready();
     // plan (task_plan.cc)
     void plan_cycle();
     void read_ahead();
