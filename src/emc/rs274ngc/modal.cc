@@ -155,13 +155,7 @@ void Interp::do_tool_length(Block &b)
 void Interp::apply_tlo(const Pose &tlo)
 {
     INTERP_FRAME();
-    // the offset applies after the XY rotation: the program point moves by the rotated difference
-    for (int i = 0; i < AX_COUNT; i++)
-        if (i != AX_X && i != AX_Y) s_.current[i] += s_.tool_offset[i] - tlo[i];
-    double dx = s_.tool_offset[AX_X] - tlo[AX_X], dy = s_.tool_offset[AX_Y] - tlo[AX_Y];
-    double r = -s_.rotation_xy * M_PI / 180.0;
-    s_.current[AX_X] += dx * cos(r) - dy * sin(r);
-    s_.current[AX_Y] += dx * sin(r) + dy * cos(r);
+    for (int i = 0; i < AX_COUNT; i++) s_.current[i] += s_.tool_offset[i] - tlo[i];
     s_.tool_offset = tlo;
     out().use_tool_length_offset(to_canon_pose(tlo));
     double k = 1.0 / s_.machine_to_program();

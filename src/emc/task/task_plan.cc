@@ -253,6 +253,8 @@ void Task::plan_execute(const std::string &text)
 
 void Task::start_mdi(const std::string &text)
 {
+    // at rest the interpreter starts from where the machine is (LinuxCNC synchs before MDI)
+    if (motion_done() && io_.done()) interp_synch();
     mdi_active_ = true;
     mdi_text_ = text;
     interp_state_ = EMC_TASK_INTERP_READING;
