@@ -11,10 +11,12 @@ namespace {
 volatile sig_atomic_t stop_requested = 0;
 void on_signal(int) { stop_requested = 1; }
 
-int usage()
+int usage(FILE *out, int status)
 {
-    fprintf(stderr, "usage: milltask -ini INIFILE\n");
-    return 1;
+    fprintf(out, "usage: milltask -ini INIFILE\n"
+                 "The task controller linuxcnc starts as [TASK]TASK (halcmd loadusr -Wn inihal milltask -ini INI):\n"
+                 "state machine, interpreter, io control (HAL iocontrol.0) and inihal. See milltask(1).\n");
+    return status;
 }
 }  // namespace
 
@@ -22,10 +24,11 @@ int main(int argc, char **argv)
 {
     std::string ini;
     for (int i = 1; i < argc; i++) {
+        if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) return usage(stdout, 0);
         if ((!strcmp(argv[i], "-ini") || !strcmp(argv[i], "--ini")) && i + 1 < argc) ini = argv[++i];
-        else return usage();
+        else return usage(stderr, 1);
     }
-    if (ini.empty()) return usage();
+    if (ini.empty()) return usage(stderr, 1);
     MachineConfig cfg;
     std::vector<std::string> errors;
     if (!machine_config_read(ini, cfg, &errors)) {

@@ -138,16 +138,43 @@ static void bez_diff(const tp_vec_t *c, int n, tp_vec_t *out)
             out[k].x[i] = n * (c[k + 1].x[i] - c[k].x[i]);
 }
 
-/* Point of a quintic at u. */
+/* Power-basis coefficients of a quintic from its control points (for Horner evaluation). */
+static void quintic_power(tp_quintic_t *q)
+{
+    static const double m[6][6] = {{1, 0, 0, 0, 0, 0},      {-5, 5, 0, 0, 0, 0},
+                                   {10, -20, 10, 0, 0, 0},  {-10, 30, -30, 10, 0, 0},
+                                   {5, -20, 30, -20, 5, 0}, {-1, 5, -10, 10, -5, 1}};
+    for (int k = 0; k < 6; k++)
+        for (int i = 0; i < TP_NAX; i++) {
+            double v = 0.0;
+            for (int j = 0; j <= k; j++)
+                v += m[k][j] * q->b[j].x[i];
+            q->c[k].x[i] = v;
+        }
+}
+
+/* Point of a quintic at u (Horner). */
 tp_vec_t tp_quintic_point(const tp_quintic_t *q, double u)
 {
-    double w[6];
+    tp_vec_t r;
     if (u >= 1.0)
         return q->b[5];
     if (u <= 0.0)
         return q->b[0];
-    bernstein(5, u, w);
-    return bez_sum(q->b, w, 5);
+    for (int i = 0; i < TP_NAX; i++)
+        r.x[i] = ((((q->c[5].x[i] * u + q->c[4].x[i]) * u + q->c[3].x[i]) * u + q->c[2].x[i]) * u +
+                  q->c[1].x[i]) * u + q->c[0].x[i];
+    return r;
+}
+
+/* First derivative of a quintic w.r.t. u (Horner). */
+static tp_vec_t quintic_d1(const tp_quintic_t *q, double u)
+{
+    tp_vec_t r;
+    for (int i = 0; i < TP_NAX; i++)
+        r.x[i] = (((5.0 * q->c[5].x[i] * u + 4.0 * q->c[4].x[i]) * u + 3.0 * q->c[3].x[i]) * u +
+                  2.0 * q->c[2].x[i]) * u + q->c[1].x[i];
+    return r;
 }
 
 /* Quintic position and derivatives w.r.t. length (u = s / len). */
@@ -200,15 +227,18 @@ tp_jet_t tp_geo_jet(const tp_geo_t *g, double s)
         s = g->len;
     switch (g->kind) {
     case TP_GEO_ARC:
-        return arc_jet(g, s);
+        j = arc_jet(g, s);
+        break;
     case TP_GEO_QUINTIC:
-        return quintic_jet(g, s);
+        j = quintic_jet(g, s);
+        break;
     default:
-        j.p = tp_geo_eval(g, s);
         j.d1 = g->u.line.dir;
         memset(&j.d2, 0, sizeof(j.d2));
-        return j;
+        break;
     }
+    j.p = tp_geo_eval(g, s);            /* exact end points at both ends */
+    return j;
 }
 
 /* Position at s; the exact end point at (or past) the end. */
@@ -262,18 +292,21 @@ static void arc_bounds(const tp_geo_t *g, tp_bounds_t *b)
     b->d3[TP_PATH_AX] = w3;
 }
 
-/* de Casteljau restriction of a degree-n polygon to [u0, u1]. */
-static void bez_restrict(const tp_vec_t *c, int n, double u0, double u1, tp_vec_t *out)
+/* de Casteljau restriction of a degree-n polygon to [u0, u1], on the nax axes listed in ax (the
+ * other components of out are zero). */
+static void bez_restrict(const tp_vec_t *c, int n, double u0, double u1, const int *ax, int nax,
+                         tp_vec_t *out)
 {
     tp_vec_t tmp[6];
+    memset(out, 0, (size_t)(n + 1) * sizeof(*out));
     /* split at u1, keep the left part; then split that at u0/u1, keep the right part */
     for (int k = 0; k <= n; k++)
         tmp[k] = c[k];
     for (int r = 1; r <= n; r++) {
         out[r - 1] = tmp[0];
         for (int k = 0; k <= n - r; k++)
-            for (int i = 0; i < TP_NAX; i++)
-                tmp[k].x[i] += u1 * (tmp[k + 1].x[i] - tmp[k].x[i]);
+            for (int q = 0; q < nax; q++)
+                tmp[k].x[ax[q]] += u1 * (tmp[k + 1].x[ax[q]] - tmp[k].x[ax[q]]);
     }
     out[n] = tmp[0];
     double t = u1 > 0.0 ? u0 / u1 : 0.0;
@@ -282,8 +315,8 @@ static void bez_restrict(const tp_vec_t *c, int n, double u0, double u1, tp_vec_
     for (int r = 1; r <= n; r++) {
         out[n - r + 1] = tmp[n - r + 1];
         for (int k = 0; k <= n - r; k++)
-            for (int i = 0; i < TP_NAX; i++)
-                tmp[k].x[i] += t * (tmp[k + 1].x[i] - tmp[k].x[i]);
+            for (int q = 0; q < nax; q++)
+                tmp[k].x[ax[q]] += t * (tmp[k + 1].x[ax[q]] - tmp[k].x[ax[q]]);
     }
     out[0] = tmp[0];
 }
@@ -301,19 +334,28 @@ static void poly_max(const tp_vec_t *c, int n, double scale, tp_metric_t m, doub
     }
 }
 
-/* Quintic bounds over [s0, s1] from the restricted derivative polygons (convex hull). */
+/* Quintic bounds over [s0, s1] from the restricted derivative polygons (convex hull); axes that
+ * do not move are skipped. */
 static void quintic_bounds(const tp_geo_t *g, double s0, double s1, tp_bounds_t *b)
 {
     tp_vec_t d1[5], d2[4], d3[3], r[6];
     double u0 = s0 / g->len, u1 = s1 / g->len, L = g->len;
+    int ax[TP_NAX], nax = 0;
+    for (int i = 0; i < TP_NAX; i++) {
+        int moves = 0;
+        for (int k = 1; k <= 5 && !moves; k++)
+            moves = g->u.q.b[k].x[i] != g->u.q.b[0].x[i];
+        if (moves)
+            ax[nax++] = i;
+    }
     bez_diff(g->u.q.b, 5, d1);
     bez_diff(d1, 4, d2);
     bez_diff(d2, 3, d3);
-    bez_restrict(d1, 4, u0, u1, r);
+    bez_restrict(d1, 4, u0, u1, ax, nax, r);
     poly_max(r, 4, 1.0 / L, g->metric, b->d1);
-    bez_restrict(d2, 3, u0, u1, r);
+    bez_restrict(d2, 3, u0, u1, ax, nax, r);
     poly_max(r, 3, 1.0 / (L * L), g->metric, b->d2);
-    bez_restrict(d3, 2, u0, u1, r);
+    bez_restrict(d3, 2, u0, u1, ax, nax, r);
     poly_max(r, 2, 1.0 / (L * L * L), g->metric, b->d3);
 }
 
@@ -340,14 +382,11 @@ double tp_quintic_length(const tp_quintic_t *q, tp_metric_t m)
                                  0.9602898564975363};
     static const double wg[4] = {0.3626837833783620, 0.3137066458778873, 0.2223810344533745,
                                  0.1012285362903763};
-    tp_vec_t d1[5];
-    double w[5], sum = 0.0;
+    double sum = 0.0;
     int first = tp_metric_first(m);
-    bez_diff(q->b, 5, d1);
     for (int k = 0; k < 8; k++) {
         double u = 0.5 + 0.5 * (k < 4 ? -xg[k] : xg[k - 4]);
-        bernstein(4, u, w);
-        tp_vec_t d = bez_sum(d1, w, 4);
+        tp_vec_t d = quintic_d1(q, u);
         sum += (k < 4 ? wg[k] : wg[k - 4]) * tp_vec_norm3(&d, first);
     }
     return 0.5 * sum;
@@ -365,4 +404,5 @@ void tp_quintic_hermite(tp_quintic_t *q, const tp_jet_t *a, const tp_jet_t *b, d
         q->b[4].x[i] = b->p.x[i] - lam * b->d1.x[i] / 5.0;
         q->b[3].x[i] = b->p.x[i] - 2.0 * lam * b->d1.x[i] / 5.0 + l2 * b->d2.x[i] / 20.0;
     }
+    quintic_power(q);
 }

@@ -4,6 +4,9 @@
 
 /* The window reaches this many stopping distances ahead. */
 #define TP_WINDOW_REACH 2.0
+/* A valley where the limits drop by more than this factor stays a target (trapezoid, S-curve). */
+#define TP_LIM_STRONGER 1.01
+#define TP_LIM_STRONGER_JERK 2.0
 
 /* Speed a region allows now: machine cap, requested speeds times the overrides, spindle sync. */
 double tp_region_cap(const tp_planner_t *tp, const tp_region_t *r, double feed_scale,
@@ -32,31 +35,32 @@ static tp_lim1_t lim_min(tp_lim1_t a, double acc, double jerk)
     return r;
 }
 
-/* Speed on the braking curve into (v, lim) at distance d, covering any acceleration there. */
+/* Largest speed any state (any acceleration) can have at distance d before a target of speed v and
+ * still meet it: decelerating at the full acceleration already, the target may be met with the
+ * acceleration still negative, so no final jerk ramp is needed. */
 static double curve_plus(double v, double d, const tp_lim1_t *lim)
 {
-    if (lim->jerk > 0.0) {
-        double tr = lim->acc / lim->jerk;
-        double d_ramp = v * tr + lim->jerk * tr * tr * tr / 6.0;
-        if (d < d_ramp)
-            d = d_ramp;
-    }
-    return tp_brake_curve(v, d, lim);
+    return sqrt(v * v + 2.0 * lim->acc * d);
 }
 
 /* A valley: the speed allowed at a region start and the limits of the stretch before it. */
 typedef struct valley {
     double s, v;
+    double cap;                 /* the region's own cap (v is INFINITY where it limits nothing) */
     tp_lim1_t lim;
     int stop;
 } valley_t;
 
-/* The stretch before a valley allows clearly more than the span after it. */
+/* The stretch before a valley allows clearly more than the span after it.  Without jerk limits
+ * every drop counts: the accelerations of curved regions grow as the speed bound ahead falls, and
+ * a target dropped in one cycle and kept in the next would leave a state planned on it unsafe. */
 static int lim_stronger(const tp_lim1_t *before, const tp_lim1_t *span)
 {
-    if (before->acc > 1.25 * span->acc)
+    if (!(span->jerk > 0.0))
+        return before->acc > TP_LIM_STRONGER * span->acc;
+    if (before->acc > TP_LIM_STRONGER_JERK * span->acc)
         return 1;
-    return span->jerk > 0.0 && before->jerk > 1.25 * span->jerk;
+    return before->jerk > TP_LIM_STRONGER_JERK * span->jerk;
 }
 
 /* Backward pass: keep the valleys that bind, lowered so that each can reach the next at rest
@@ -78,7 +82,7 @@ static void reduce(tp_window_t *w, const valley_t *vl, int n, tp_lim1_t first_li
         if ((bind || lim_stronger(&vl[k].lim, &span)) && m < TP_WINDOW_MAX) {
             rev[m - 1].lim = span;
             rev[m].s = vl[k].s;
-            rev[m].v = fmin(vl[k].v, tp_chain_vmax(vb, d, &span));
+            rev[m].v = fmin(fmin(vl[k].v, vl[k].cap), tp_chain_vmax(vb, d, &span));
             rev[m].stop = vl[k].stop && rev[m].v <= 0.0;
             m++;
             b = k;
@@ -94,81 +98,163 @@ static void reduce(tp_window_t *w, const valley_t *vl, int n, tp_lim1_t first_li
         w->t[k] = rev[m - 1 - k];
 }
 
-/* Limits of a region as a pair. */
-static tp_lim1_t reg_lim(const tp_region_t *r)
+/* Limits of a region as a pair, for speeds up to v_hi: a curved region leaves more acceleration
+ * for speed changes the slower it is passed. */
+static tp_lim1_t reg_lim(const tp_region_t *r, double v_hi)
 {
     tp_lim1_t l = {r->a, r->j};
+    if (r->a_rest > r->a && v_hi < r->v_mach) {
+        double f = v_hi / r->v_mach;
+        l.acc = r->a + (r->a_rest - r->a) * (1.0 - f * f);
+    }
     return l;
 }
 
-/* Note a region the cycle may enter; acc is the smallest acceleration cap ahead of it. */
-static void add_stretch(tp_window_t *w, double s0, double cap, const tp_region_t *r)
+/* Fastest the executor can ever be at the far end of a region it enters at most at speed
+ * sqrt(vf2) after dist of it: no region lets it accelerate more than its a_rest.  The bound only
+ * falls from cycle to cycle, so the limits reg_lim gives only grow: plans stay valid. */
+static double reach_speed(const tp_region_t *r, double vf2, double dist)
+{
+    return fmin(r->v_mach, sqrt(vf2 + 2.0 * fmax(r->a_rest, r->a) * fmax(dist, 0.0)));
+}
+
+/* Note a region the cycle may enter, with its limits for speeds up to v_hi. */
+static void add_stretch(tp_window_t *w, double s0, double cap, const tp_region_t *r, double v_hi)
 {
     if (w->nr >= TP_CROSS_MAX)
         return;
     w->r[w->nr].s = s0;
     w->r[w->nr].v = cap;
-    w->r[w->nr].lim.acc = r->a;
-    w->r[w->nr].lim.jerk = r->j;
+    w->r[w->nr].lim = reg_lim(r, v_hi);
+    w->r[w->nr].jerk_own = r->j;
     w->nr++;
 }
 
-/* Lower the acceleration of every stretch to a cap met within the anticipation distance. */
-static void anticipate(tp_window_t *w, double s0, double acc)
+/* Lower the acceleration and jerk of every stretch to caps met within the anticipation distance:
+ * an acceleration carried into a stretch of smaller jerk settles later and would overshoot. */
+static void anticipate(tp_window_t *w, double s0, double acc, double jerk)
 {
     for (int k = 0; k < w->nr; k++)
-        if (w->r[k].s <= s0)
+        if (w->r[k].s <= s0) {
             w->r[k].lim.acc = fmin(w->r[k].lim.acc, acc);
+            if (jerk > 0.0)
+                w->r[k].lim.jerk = w->r[k].lim.jerk > 0.0 ? fmin(w->r[k].lim.jerk, jerk) : jerk;
+        }
 }
 
-/* Build the window from the executor state: speed targets, and the stretches of the next cycle. */
-void tp_window_build(tp_planner_t *tp, tp_window_t *w, double fs, double rs, double spindle_rps)
+
+/* A region the executor meets walking in direction dir: where it enters it (backwards positions
+ * are -s), whether a stop lies at that point, whether it may enter at all (reverse run cannot run
+ * synchronised or tapping moves backwards). */
+typedef struct meet {
+    const tp_region_t *r;
+    double pos;
+    int stop;
+    int blocked;
+} meet_t;
+
+/* The k-th region after the current one in direction dir; 0 past the end of the kept path. */
+static int meet_region(tp_planner_t *tp, int dir, uint64_t k, meet_t *m)
+{
+    if (dir > 0) {
+        uint64_t n = tp->ex.reg + k;
+        if (n >= tp->reg_head)
+            return 0;
+        m->r = tp_reg_at(tp, n);
+        m->pos = m->r->s0;
+        m->stop = m->r->v_start <= 0.0;
+        m->blocked = 0;
+        return 1;
+    }
+    if (tp->ex.reg < tp->reg_tail + k)
+        return 0;
+    uint64_t n = tp->ex.reg - k;
+    m->r = tp_reg_at(tp, n);
+    m->pos = -(m->r->s0 + m->r->len);
+    m->stop = (tp_reg_at(tp, n + 1)->flags & TP_REG_STOP) != 0;
+    m->blocked = (m->r->flags & (TP_REG_SYNC_POS | TP_REG_TAP)) != 0;
+    return 1;
+}
+
+/* Where the kept path ends in direction dir: after the last region met (the current one when none
+ * was met). */
+static double path_end(tp_planner_t *tp, int dir, const meet_t *last, int have_last)
+{
+    if (dir > 0) {
+        const tp_region_t *r = tp_reg_at(tp, tp->reg_head - 1);
+        return r->s0 + r->len;
+    }
+    return -(have_last ? last->r->s0 : tp_reg_at(tp, tp->ex.reg)->s0);
+}
+
+/* Build the window from the executor state for direction dir (positions -s backwards): speed
+ * targets, and the stretches of the next cycle. */
+void tp_window_build(tp_planner_t *tp, tp_window_t *w, double fs, double rs, double spindle_rps, int dir)
 {
     valley_t vl[TP_WINDOW_MAX + 1];
     int n = 0;
-    double s = tp->ex.s, T = tp->lim.cycle_time;
+    double s = dir > 0 ? tp->ex.s : -tp->ex.s, T = tp->lim.cycle_time;
     const tp_region_t *cur = tp_reg_at(tp, tp->ex.reg);
-    tp_lim1_t lim_cur = reg_lim(cur);
+    double cur_end = dir > 0 ? cur->s0 + cur->len : -cur->s0;
+    double v_hi = reach_speed(cur, tp->ex.v * tp->ex.v, cur_end - s);
+    tp_lim1_t lim_cur = reg_lim(cur, v_hi);
     double cap_cur = tp_region_cap(tp, cur, fs, rs, spindle_rps);
     w->nr = 0;
-    add_stretch(w, s, cap_cur, cur);
+    add_stretch(w, s, cap_cur, cur, v_hi);
     double v = fmax(tp->ex.v, fmin(cap_cur, 1e9));
     double travel = (v + lim_cur.acc * T) * T * 1.5 + 1e-12;
     double ramp = lim_cur.jerk > 0.0 ? v * (fabs(tp->ex.a) + lim_cur.acc) / lim_cur.jerk * 1.5 : 0.0;
+    /* the most positive acceleration the cycle can end with, and how far settling it takes per
+     * unit of the jerk it settles with */
+    double a_pos = fmax(tp->ex.a, 0.0) + lim_cur.jerk * T;
+    double settle_j = (v + a_pos * T) * a_pos * 1.5;
     double reach = TP_WINDOW_REACH * tp_stop_dist(v, fabs(tp->ex.a), &lim_cur) + 4.0 * travel;
     /* the window only grows: a pseudo stop that moved closer could make a safe state unsafe */
-    if (tp->ex.window_end - s > reach)
+    if (dir > 0 && tp->ex.window_end - s > reach)
         reach = tp->ex.window_end - s;
-    tp->ex.window_end = s + reach;
+    if (dir > 0)
+        tp->ex.window_end = s + reach;
     tp_lim1_t before = lim_cur;
-    uint64_t k;
-    for (k = tp->ex.reg + 1; k < tp->reg_head && n < TP_WINDOW_MAX; k++) {
-        const tp_region_t *r = tp_reg_at(tp, k);
-        double d = r->s0 - s;
-        double rcap = tp_region_cap(tp, r, fs, rs, spindle_rps), cap = fmin(rcap, r->v_start);
+    /* a region start limits nothing unless its cap is below every speed allowed before it */
+    double v_before = fmax(tp->ex.v, cap_cur);
+    meet_t m;
+    int have = 0, more;
+    uint64_t k = 1;
+    for (; (more = meet_region(tp, dir, k, &m)) && !m.blocked && n < TP_WINDOW_MAX; k++) {
+        const tp_region_t *r = m.r;
+        have = 1;
+        double d = m.pos - s;
+        double rcap = tp_region_cap(tp, r, fs, rs, spindle_rps), cap = m.stop ? 0.0 : rcap;
+        double limit = cap < v_before ? cap : INFINITY;
+        v_before = fmax(v_before, rcap);
+        v_hi = reach_speed(r, v_hi * v_hi, r->len);
+        tp_lim1_t lim_r = reg_lim(r, v_hi);
         if (d < travel)
-            add_stretch(w, r->s0, rcap, r);
-        if (d < travel + ramp)
-            anticipate(w, r->s0, r->a);
-        vl[n].s = r->s0;
-        vl[n].v = cap;
+            add_stretch(w, m.pos, rcap, r, v_hi);
+        /* a region of smaller jerk is anticipated from as far as settling an acceleration under way
+         * takes with its jerk */
+        double settle = lim_r.jerk > 0.0 && lim_r.jerk < lim_cur.jerk ? settle_j / lim_r.jerk : 0.0;
+        if (d < travel + fmax(ramp, settle))
+            anticipate(w, m.pos, lim_r.acc, lim_r.jerk);
+        vl[n].s = m.pos;
+        vl[n].v = limit;
+        vl[n].cap = cap;
         vl[n].lim = before;
         vl[n].stop = cap <= 0.0;
         n++;
-        before = reg_lim(r);
+        before = lim_r;
         if (d > reach)
             break;
     }
-    if (k >= tp->reg_head) {
-        /* end of the known path: a stop there */
-        const tp_region_t *last = tp_reg_at(tp, tp->reg_head - 1);
-        vl[n].s = last->s0 + last->len;
-        vl[n].v = 0.0;
+    if (!more || m.blocked || n == 0) {
+        /* end of the kept path: a stop there */
+        vl[n].s = more && m.blocked ? m.pos : path_end(tp, dir, &m, have);
+        vl[n].v = vl[n].cap = 0.0;
         vl[n].lim = before;
         vl[n].stop = 1;
         n++;
     } else {
-        vl[n - 1].v = 0.0;              /* beyond the reach: a pseudo stop bounds the pass */
+        vl[n - 1].v = vl[n - 1].cap = 0.0;  /* beyond the reach: a pseudo stop bounds the pass */
         vl[n - 1].stop = 0;
     }
     reduce(w, vl, n, lim_cur);

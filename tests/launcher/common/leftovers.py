@@ -9,22 +9,37 @@ from openemc_launcher import sysv
 NML_KEYS = (1001, 1002, 1003, 100, 0x544F4C)
 
 
+SESSION_PROGRAMS = ("launcher_test_task", "linuxcncsvr", "linuxcnc", "rtapi_app",
+                    "hal_manualtoolchange")
+
+
+def explicit_instance(pid):
+    """The OPENEMC_INSTANCE in a process's environment, or None when it has none."""
+    try:
+        with open("/proc/%d/environ" % pid, "rb") as f:
+            for item in f.read().split(b"\0"):
+                if item.startswith(b"OPENEMC_INSTANCE="):
+                    text = item.split(b"=", 1)[1]
+                    return int(text) if text.isdigit() else None
+    except OSError:
+        pass
+    return None
+
+
 def processes(instance):
-    """Launcher-session processes still running in an instance."""
+    """Session programs (by program name, not text) still running in an instance."""
     found = []
     for name in os.listdir("/proc"):
         if not name.isdigit() or int(name) == os.getpid():
             continue
         try:
             with open("/proc/%s/cmdline" % name, "rb") as f:
-                cmd = f.read().replace(b"\0", b" ").decode(errors="replace")
+                argv = [a.decode(errors="replace") for a in f.read().split(b"\0") if a]
         except OSError:
             continue
-        if sysv.process_instance(int(name)) != instance:
-            continue
-        if any(word in cmd for word in ("launcher_test_task", "linuxcncsvr", "bin/linuxcnc ",
-                                        "rtapi_app", "hal_manualtoolchange")):
-            found.append("%s %s" % (name, cmd.strip()))
+        programs = {os.path.basename(a) for a in argv[:2]}
+        if programs & set(SESSION_PROGRAMS) and explicit_instance(int(name)) == instance:
+            found.append("%s %s" % (name, " ".join(argv)))
     return found
 
 
