@@ -44,6 +44,7 @@ bool Task::init_interp(std::string *error)
     interp_->set_var_file(var ? *var : "");
     interp_->set_task(true);
     interp_->set_start_in_machine_units(true);
+    interp_->set_loop_on_main_m99(true);
     interp_->set_block_delete(block_delete_);
     interp_->set_tools(io_.table().canon_tools());
     interp_->set_user_m_handler([this](int m, double p, double q) { return user_m(m, p, q); });
