@@ -53,7 +53,7 @@ void Interp::init()
     c.init_canon();
     s_.external_length_units = c.get_external_length_units();
     s_.machine_units = s_.external_length_units > 0.5 ? CANON_UNITS_MM : CANON_UNITS_INCHES;
-    s_.units = CANON_UNITS_MM;
+    s_.units = start_in_machine_units_ ? c.get_external_length_unit_type() : CANON_UNITS_MM;
     double clear = s_.units == CANON_UNITS_MM ? 1.0 : 0.050;
     s_.peck_clearance_g73 = s_.settings.g73_peck_clearance >= 0 ? s_.settings.g73_peck_clearance : clear;
     s_.peck_clearance_g83 = s_.settings.g83_peck_clearance >= 0 ? s_.settings.g83_peck_clearance : clear;

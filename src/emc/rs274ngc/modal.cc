@@ -154,6 +154,7 @@ Pose Interp::tlo_words(const Block &b, int g) const
     bool any = false;
     for (int i = 0; i < 6; i++) any = any || b.word(axes[i]);
     if (g == 432 && any && b.word('h')) throw InterpError("G43.2: Can not have both H and axis words");
+    if (g == 432 && !any && !b.word('h')) throw InterpError("G43.2: No axes specified and H word missing");
     Pose tlo = s_.tool_offset;
     Pose add = g == 432 && !any ? tool_pose(s_.tools[h_word_index(b)]) : Pose{};
     for (int i = 0; i < 6; i++) {

@@ -20,7 +20,8 @@ void pose_set(CanonPose &p, int i, double v)
 int Interp::find_tool_index(int toolno) const
 {
     INTERP_FRAME();
-    for (size_t i = 1; i < s_.tools.size(); i++)
+    // a random changer's spindle (index 0) is a pocket too: its tool can be selected again
+    for (size_t i = s_.settings.random_toolchanger ? 0 : 1; i < s_.tools.size(); i++)
         if (s_.tools[i].toolno == toolno) return (int)i;
     return -1;
 }
