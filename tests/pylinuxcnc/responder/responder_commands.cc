@@ -183,8 +183,10 @@ void jog_incr(Machine &m, const NMLmsg &msg)
     const EMC_JOG_INCR &j = as<EMC_JOG_INCR>(msg);
     if (!jog_allowed(m, j, "JOG_INCR") || j.jjogmode == EMC_JOG_JOINT) return;
     int i = j.joint_or_axis;
-    m.jog_target[i] = m.pos[i] + j.incr;
-    m.jog_vel[i] = clamp_vel(m, j.incr < 0 ? -std::abs(j.vel) : std::abs(j.vel));
+    // As motion does: the sign of vel is the direction, incr is added or taken away.
+    double step = j.vel > 0 ? j.incr : -j.incr;
+    m.jog_target[i] = m.pos[i] + step;
+    m.jog_vel[i] = clamp_vel(m, step < 0 ? -std::abs(j.vel) : std::abs(j.vel));
     m.jog_to_target[i] = true;
 }
 

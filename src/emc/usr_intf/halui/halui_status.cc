@@ -1,33 +1,11 @@
 // halui_status.cc: halui's output pins from task's status: machine, modes, program, coolant, spindles, overrides, joints, axes, tool.
-#include <cmath>
-
 #include "halui.hh"
+#include "ui_pose.hh"
 
 namespace {
 
 void set(hal_bit_t **pin, bool v) { **pin = v; }
 void set(hal_float_t **pin, double v) { **pin = v; }
-
-// Pose component i (X Y Z A B C U V W).
-double pose_at(const EmcPose &p, int i)
-{
-    const double v[EMCMOT_MAX_AXIS] = {p.tran.x, p.tran.y, p.tran.z, p.a, p.b, p.c, p.u, p.v, p.w};
-    return v[i];
-}
-
-// The commanded position in the current coordinate system: machine position minus the
-// G5x offset and the tool offset, turned back by the XY rotation, minus the G92 offset.
-void relative_position(const EMC_TASK_STAT &t, const EmcPose &machine, double out[EMCMOT_MAX_AXIS])
-{
-    for (int i = 0; i < EMCMOT_MAX_AXIS; i++)
-        out[i] = pose_at(machine, i) - pose_at(t.g5x_offset, i) - pose_at(t.toolOffset, i);
-    double r = -t.rotation_xy * M_PI / 180.0;
-    double x = out[0] * std::cos(r) - out[1] * std::sin(r);
-    double y = out[0] * std::sin(r) + out[1] * std::cos(r);
-    out[0] = x;
-    out[1] = y;
-    for (int i = 0; i < EMCMOT_MAX_AXIS; i++) out[i] -= pose_at(t.g92_offset, i);
-}
 
 void machine_outputs(HaluiPins &p, const EMC_STAT &s)
 {
@@ -81,14 +59,14 @@ void joint_outputs(Halui &h, const EMC_STAT &s)
 void axis_outputs(Halui &h, const EMC_STAT &s)
 {
     double rel[EMCMOT_MAX_AXIS];
-    relative_position(s.task, s.motion.traj.position, rel);
+    ui_relative_position(s.task, s.motion.traj.position, rel);
     for (int a = 0; a < EMCMOT_MAX_AXIS; a++) {
         if (!(h.cfg.axis_mask & (1u << a))) continue;
         AxisPins &p = h.pins.axis[a];
-        set(p.pos_commanded, pose_at(s.motion.traj.position, a));
-        set(p.pos_feedback, pose_at(s.motion.traj.actualPosition, a));
+        set(p.pos_commanded, ui_pose_at(s.motion.traj.position, a));
+        set(p.pos_feedback, ui_pose_at(s.motion.traj.actualPosition, a));
         set(p.pos_relative, rel[a]);
-        set(h.pins.tool_length_offset[a], pose_at(s.task.toolOffset, a));
+        set(h.pins.tool_length_offset[a], ui_pose_at(s.task.toolOffset, a));
     }
     const EMC_TOOL_STAT &tool = s.io.tool;
     **h.pins.tool_number = tool.toolInSpindle > 0 ? static_cast<uint32_t>(tool.toolInSpindle) : 0;
