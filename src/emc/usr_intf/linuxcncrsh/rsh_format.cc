@@ -9,10 +9,12 @@
 
 namespace {
 
-// |a - b| small relative to b.
+// Units within this of a known value get its name (LinuxCNC's closeness).
+const double UNITS_CLOSENESS = 0.0001;
+
 bool close_to(double a, double b)
 {
-    return std::fabs(a - b) <= 1e-6 * std::fabs(b) + 1e-12;
+    return std::fabs(a - b) < UNITS_CLOSENESS;
 }
 
 bool is_blank(char c)
