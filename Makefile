@@ -17,6 +17,17 @@ configure:
 	autoreconf -fi
 	./configure
 
+# Plain `make` on a fresh clone (or after configure.ac changed) configures first: GNU make remakes
+# the included Makefile.inc and restarts. A tree configured before keeps its options (--recheck).
+ifeq ($(filter clean distclean configure setup run check,$(MAKECMDGOALS)),)
+Makefile.inc: configure.ac Makefile.inc.in
+	@echo "Makefile: configuring (autoreconf -fi, then configure)"
+	@autoreconf -fi || { echo "Makefile: autoreconf failed; scripts/install-deps lists the Debian packages the build needs" >&2; exit 1; }
+	@if [ -x config.status ]; then ./config.status --recheck && ./config.status; else ./configure; fi || \
+	    { echo "Makefile: configure failed; scripts/install-deps lists the Debian packages the build needs" >&2; exit 1; }
+	@touch $@
+endif
+
 run: setup
 	@$(MAKE) --no-print-directory all
 	@scripts/run-main
@@ -44,14 +55,14 @@ fuzz: all $(FUZZ_TARGETS)
 -include $(shell find objects -name '*.d' 2>/dev/null)
 else
 all test bench fuzz:
-	@echo "Makefile: not configured yet; run 'make run', 'make check' or './configure'" >&2
+	@echo "Makefile: not configured (see the messages above); run 'make setup' or './configure'" >&2
 	@exit 1
 endif
 
 clean:
 	rm -rf objects bin lib rtlib include share/man
-	find . -name '*.pyc' -delete -o -name __pycache__ -prune -exec rm -rf {} +
+	find . -name __pycache__ -prune -exec rm -rf {} + -o -name '*.pyc' -exec rm -f {} +
 
 distclean: clean
-	rm -rf Makefile.inc config.status config.log configure autom4te.cache \
+	rm -rf Makefile.inc config.status config.log configure configure~ autom4te.cache \
 	    src/config.h src/config.h.in src/config.h.in~ aclocal.m4

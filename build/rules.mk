@@ -7,6 +7,7 @@
 #   $(call pymodule,NAME,SOURCES,LDLIBS)   -> lib/python/NAME$(PYTHON_EXT_SUFFIX)
 #   $(call script,SRC,DEST)                -> DEST, a copy of SRC marked executable
 #   PUBLIC_HEADERS += src/x/y.h            -> include/y.h (for halcompile and out-of-tree code)
+#   $(call manpage,src/x/NAME.N ...)       -> share/man/manN/NAME.N (hand-written man pages)
 # Each helper appends its output to TARGETS. C sources may be .c, C++ sources .cc.
 
 WARN_FLAGS := -Wall -Wextra
@@ -96,6 +97,14 @@ $(2): $(1)
 TARGETS += $(2)
 endef
 script = $(eval $(call script_tmpl,$(1),$(2)))
+
+define manpage_tmpl
+share/man/man$(subst .,,$(suffix $(1)))/$(notdir $(1)): $(1)
+	@mkdir -p $$(@D)
+	cp $$< $$@
+TARGETS += share/man/man$(subst .,,$(suffix $(1)))/$(notdir $(1))
+endef
+manpage = $(foreach page,$(1),$(eval $(call manpage_tmpl,$(page))))
 
 headers: $(PUBLIC_HEADERS)
 	@mkdir -p include

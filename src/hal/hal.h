@@ -236,14 +236,14 @@ extern int hal_set_exact_period(void);
 
 /* ---- ports (byte FIFOs owned by port signals) ------------------------------ */
 extern int hal_port_alloc(unsigned size, hal_port_t *port);
-extern bool hal_port_read(hal_port_t port, char *dest, unsigned count);
-extern bool hal_port_peek(hal_port_t port, char *dest, unsigned count);
-extern bool hal_port_peek_commit(hal_port_t port, unsigned count);
-extern bool hal_port_write(hal_port_t port, const char *src, unsigned count);
-extern unsigned hal_port_readable(hal_port_t port);
-extern unsigned hal_port_writable(hal_port_t port);
-extern unsigned hal_port_buffer_size(hal_port_t port);
-extern void hal_port_clear(hal_port_t port);
+extern bool hal_port_read(const hal_port_t *port, char *dest, unsigned count);
+extern bool hal_port_peek(const hal_port_t *port, char *dest, unsigned count);
+extern bool hal_port_peek_commit(const hal_port_t *port, unsigned count);
+extern bool hal_port_write(const hal_port_t *port, const char *src, unsigned count);
+extern unsigned hal_port_readable(const hal_port_t *port);
+extern unsigned hal_port_writable(const hal_port_t *port);
+extern unsigned hal_port_buffer_size(const hal_port_t *port);
+extern void hal_port_clear(const hal_port_t *port);
 #ifdef ULAPI
 /* Sleep-poll until `count` bytes are readable/writable or *stop is set. */
 extern void hal_port_wait_readable(hal_port_t **port, unsigned count, sig_atomic_t *stop);
@@ -336,11 +336,15 @@ typedef struct {
     int type;       /* HAL_COMP_RT / HAL_COMP_USER / HAL_COMP_INST (hal_priv.h) */
     int ready;      /* non-zero once hal_ready was called */
     int pid;        /* user comps: owner pid, RT: 0 */
+    int owner_alive; /* user comps: 0 once the owner process is gone (killed); RT: 1 */
     char name[HAL_NAME_LEN + 1];
 } hal_comp_info_t;
 /* Look a component up by name / id; 0 or -ENOENT. */
 extern int hal_comp_by_name(const char *name, hal_comp_info_t *info);
 extern int hal_comp_by_id(int comp_id, hal_comp_info_t *info);
+/* Remove a user component whose process no longer exists (0), else -ENOENT (no such
+   component), -EINVAL (not a user component) or -EBUSY (its process still runs). */
+extern int hal_comp_remove_orphan(const char *name);
 
 /* Object counts and memory use (halcmd status mem). */
 typedef struct {

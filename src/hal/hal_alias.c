@@ -74,11 +74,7 @@ static int hal_alias_precheck(const char *what, const char *name, const char *al
         HAL_ERR("%s_alias called without a name\n", what);
         return -EINVAL;
     }
-    if (alias && strlen(alias) > HAL_NAME_LEN) {
-        HAL_ERR("alias name '%s' is too long\n", alias);
-        return -EINVAL;
-    }
-    return 0;
+    return alias ? halpr_name_check("alias", alias, HAL_NAME_LEN) : 0;
 }
 
 /* Finds a pin (is_pin) or param by name or alias, as a list node. */

@@ -51,6 +51,7 @@ static int hal_comp_create(const char *name, int id)
     comp->comp_id = id;
     comp->type = hal_proc_is_rt ? HAL_COMP_RT : HAL_COMP_USER;
     comp->pid = hal_proc_is_rt ? 0 : getpid();
+    comp->owner_start = hal_proc_is_rt ? 0 : halpr_process_start(getpid());
     comp->shmem_base = hal_shmem_base;
     halpr_index_insert_head(&hal_data->comps, (hal_node_t *)comp);
     return 0;
@@ -65,8 +66,7 @@ int hal_init(const char *name)
         HAL_ERR("no component name\n");
         return -EINVAL;
     }
-    if (strlen(name) > HAL_NAME_LEN) {
-        HAL_ERR("component name '%s' is too long\n", name);
+    if (halpr_name_check("component", name, HAL_NAME_LEN) < 0) {
         return -EINVAL;
     }
     rc = hal_proc_is_rt ? 0 : hal_attach_user();

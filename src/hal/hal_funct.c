@@ -8,10 +8,9 @@ static int hal_export_check(const char *name, int comp_id, hal_comp_t **out)
     hal_comp_t *comp;
     int rc;
 
-    if (strlen(name) + strlen(".tmax-increased") > HAL_NAME_LEN) {
-        HAL_ERR("function name '%s' is too long\n", name);
-        return -EINVAL;
-    }
+    rc = halpr_name_check("function", name, HAL_NAME_LEN - strlen(".tmax-increased"));
+    if (rc < 0)
+        return rc;
     rc = halpr_comp_check(comp_id, "export_funct", &comp);
     if (rc < 0)
         return rc;

@@ -10,6 +10,32 @@ static unsigned hal_name_hash(const char *name)
     return h;
 }
 
+/* Check a new object's name: not empty, at most max_len bytes, no white space or control
+   characters (they could never be named in a HAL file), not ending in '.' (an empty last
+   part, as a prefix with an empty pin name gives); 0 or -EINVAL after a message. */
+int halpr_name_check(const char *kind, const char *name, size_t max_len)
+{
+    if (!name || !*name) {
+        HAL_ERR("%s name is empty\n", kind);
+        return -EINVAL;
+    }
+    if (strlen(name) > max_len) {
+        HAL_ERR("%s name '%s' is too long\n", kind, name);
+        return -EINVAL;
+    }
+    for (const char *p = name; *p; p++) {
+        if ((unsigned char)*p <= ' ' || *p == 0x7f) {
+            HAL_ERR("%s name '%s' contains white space or control characters\n", kind, name);
+            return -EINVAL;
+        }
+    }
+    if (name[strlen(name) - 1] == '.') {
+        HAL_ERR("%s name '%s' ends with '.'\n", kind, name);
+        return -EINVAL;
+    }
+    return 0;
+}
+
 /* Hash bucket head for a name. */
 static int *hal_bucket(hal_index_t *ix, const char *name)
 {

@@ -33,9 +33,12 @@ void halpr_index_insert_sorted(hal_index_t *ix, hal_node_t *n);
 void halpr_index_insert_head(hal_index_t *ix, hal_node_t *n);
 void halpr_index_remove(hal_index_t *ix, hal_node_t *n);
 int halpr_index_setup(hal_index_t *ix, int nbuckets);
+int halpr_name_check(const char *kind, const char *name, size_t max_len);
 
 /* hal_comp.c */
 void halpr_comp_free_items(hal_comp_t *comp);
+unsigned long long halpr_process_start(int pid);
+int halpr_comp_owner_alive(const hal_comp_t *comp);
 int halpr_comp_check(int comp_id, const char *what, hal_comp_t **out);
 
 /* hal_pin.c / hal_param.c */

@@ -150,6 +150,7 @@ static void hal_comp_info_fill(hal_comp_t *c, hal_comp_info_t *info)
     info->type = c->type;
     info->ready = c->ready;
     info->pid = c->pid;
+    info->owner_alive = halpr_comp_owner_alive(c);
     strcpy(info->name, c->name);
 }
 

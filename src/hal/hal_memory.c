@@ -106,6 +106,8 @@ int hal_shm_attach(void)
 
     if (hal_data)
         return 0;
+    if (rtapi_instance() < 0)
+        return -EINVAL;
     for (tries = 0; tries < 100; tries++) {
         id = shmget(key, 0, 0600);
         if (id >= 0) {

@@ -12,11 +12,7 @@ static int hal_param_check_kind(const char *name, hal_type_t type, hal_param_dir
         HAL_ERR("param direction not one of HAL_RO, or HAL_RW\n");
         return -EINVAL;
     }
-    if (strlen(name) > HAL_NAME_LEN) {
-        HAL_ERR("parameter name '%s' is too long\n", name);
-        return -EINVAL;
-    }
-    return 0;
+    return halpr_name_check("parameter", name, HAL_NAME_LEN);
 }
 
 /* Create the param record; mutex held. */

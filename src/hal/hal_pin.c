@@ -28,11 +28,7 @@ static int hal_pin_check_kind(const char *name, hal_type_t type, hal_pin_dir_t d
         HAL_ERR("pin '%s': port pins must be HAL_IN or HAL_OUT\n", name);
         return -EINVAL;
     }
-    if (strlen(name) > HAL_NAME_LEN) {
-        HAL_ERR("pin name '%s' is too long\n", name);
-        return -EINVAL;
-    }
-    return 0;
+    return halpr_name_check("pin", name, HAL_NAME_LEN);
 }
 
 /* Create the pin record and point the owner's cell at its dummy; mutex held. */

@@ -12,12 +12,12 @@ typedef struct {
     char buff[];
 } hal_port_shm_t;
 
-/* The ring behind a handle, or NULL for 0 / unmapped. */
-static hal_port_shm_t *hal_port_ring(int handle)
+/* The ring behind a port (its handle), or NULL for a NULL port, handle 0 or no HAL. */
+static hal_port_shm_t *hal_port_ring(const hal_port_t *port)
 {
-    if (!handle || !hal_data)
+    if (!port || !*port || !hal_data)
         return NULL;
-    return (hal_port_shm_t *)(hal_shmem_base + handle);
+    return (hal_port_shm_t *)(hal_shmem_base + *port);
 }
 
 /* Allocate a port ring of `size` bytes in HAL memory; *port gets its handle. */
@@ -42,7 +42,7 @@ int hal_port_alloc(unsigned size, hal_port_t *port)
 }
 
 /* Bytes ready to read. */
-unsigned hal_port_readable(hal_port_t port)
+unsigned hal_port_readable(const hal_port_t *port)
 {
     hal_port_shm_t *r = hal_port_ring(port);
     unsigned rd, wr;
@@ -55,18 +55,18 @@ unsigned hal_port_readable(hal_port_t port)
 }
 
 /* Bytes that can be written. */
-unsigned hal_port_writable(hal_port_t port)
+unsigned hal_port_writable(const hal_port_t *port)
 {
     hal_port_shm_t *r = hal_port_ring(port);
     return r ? r->size - 1 - hal_port_readable(port) : 0;
 }
 
 /* Ring size in bytes; reports (and returns 0 for) an unallocated port. */
-unsigned hal_port_buffer_size(hal_port_t port)
+unsigned hal_port_buffer_size(const hal_port_t *port)
 {
     hal_port_shm_t *r = hal_port_ring(port);
     if (!r) {
-        rtapi_print_msg(RTAPI_MSG_ERR, "hal_port_buffer_size: invalid port 0x%x\n", (unsigned)port);
+        rtapi_print_msg(RTAPI_MSG_ERR, "hal_port_buffer_size: invalid port 0x%x\n", port ? (unsigned)*port : 0u);
         return 0;
     }
     return r->size;
@@ -81,7 +81,7 @@ static void hal_port_copy_out(hal_port_shm_t *r, unsigned from, char *dest, unsi
 }
 
 /* Copy count bytes all-or-nothing without consuming them. */
-bool hal_port_peek(hal_port_t port, char *dest, unsigned count)
+bool hal_port_peek(const hal_port_t *port, char *dest, unsigned count)
 {
     hal_port_shm_t *r = hal_port_ring(port);
 
@@ -92,7 +92,7 @@ bool hal_port_peek(hal_port_t port, char *dest, unsigned count)
 }
 
 /* Consume count bytes previously peeked (all-or-nothing). */
-bool hal_port_peek_commit(hal_port_t port, unsigned count)
+bool hal_port_peek_commit(const hal_port_t *port, unsigned count)
 {
     hal_port_shm_t *r = hal_port_ring(port);
 
@@ -103,13 +103,13 @@ bool hal_port_peek_commit(hal_port_t port, unsigned count)
 }
 
 /* Read count bytes all-or-nothing. */
-bool hal_port_read(hal_port_t port, char *dest, unsigned count)
+bool hal_port_read(const hal_port_t *port, char *dest, unsigned count)
 {
     return hal_port_peek(port, dest, count) && hal_port_peek_commit(port, count);
 }
 
 /* Write count bytes all-or-nothing. */
-bool hal_port_write(hal_port_t port, const char *src, unsigned count)
+bool hal_port_write(const hal_port_t *port, const char *src, unsigned count)
 {
     hal_port_shm_t *r = hal_port_ring(port);
     unsigned wr, first;
@@ -125,7 +125,7 @@ bool hal_port_write(hal_port_t port, const char *src, unsigned count)
 }
 
 /* Drop everything queued (reader side). */
-void hal_port_clear(hal_port_t port)
+void hal_port_clear(const hal_port_t *port)
 {
     hal_port_shm_t *r = hal_port_ring(port);
     if (r)
@@ -134,10 +134,10 @@ void hal_port_clear(hal_port_t port)
 
 /* Poll every 10 ms until test(**port) >= count or *stop is set. */
 static void hal_port_wait(hal_port_t **port, unsigned count, sig_atomic_t *stop,
-                          unsigned (*test)(hal_port_t))
+                          unsigned (*test)(const hal_port_t *))
 {
     struct timespec ts = {0, 10000000};
-    while (!(stop && *stop) && test(**port) < count)
+    while (!(stop && *stop) && test(*port) < count)
         nanosleep(&ts, NULL);
 }
 

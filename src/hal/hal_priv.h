@@ -59,7 +59,7 @@
 extern "C" {
 #endif
 
-#define HAL_DATA_VERSION 0x4f450015          /* must match or attach fails (-EPROTO) */
+#define HAL_DATA_VERSION 0x4f450016          /* must match or attach fails (-EPROTO) */
 #define HAL_DEFAULT_SIZE (32L * 1024 * 1024)   /* arena size without $OPENEMC_HAL_SIZE */
 #define HAL_MIN_SIZE (256L * 1024)             /* smallest accepted $OPENEMC_HAL_SIZE */
 
@@ -148,6 +148,7 @@ typedef struct {
     int type;                   /* hal_comp_type_t */
     volatile int ready;         /* 0 initializing, 1 ready */
     int pid;                    /* owner pid (user comps), 0 for RT */
+    unsigned long long owner_start; /* owner's start time (clock ticks after boot), 0 unknown */
     int insmod_args;            /* offset of saved loadrt args, 0 = none */
     int is_thread_comp;         /* pseudo comp __<thread> */
     char *shmem_base;           /* block address in the owner's process */

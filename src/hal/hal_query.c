@@ -102,7 +102,7 @@ int hal_get_s(const char *name, hal_type_t *type, hal_data_u *value, int *writer
         return -ENOENT;
     value->lu = 0;
     if (*type == HAL_PORT)
-        value->u = hal_port_buffer_size(cell.p);
+        value->u = hal_port_buffer_size(&cell.p);
     else
         hal_value_copy(value, &cell, *type);
     return 0;

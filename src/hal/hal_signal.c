@@ -59,10 +59,9 @@ int hal_signal_new(const char *name, hal_type_t type)
     rc = halpr_check_unlocked("signal_new", HAL_LOCK_CONFIG, "%s called while HAL is locked");
     if (rc < 0)
         return rc;
-    if (!name || strlen(name) > HAL_NAME_LEN) {
-        HAL_ERR("signal name '%s' is too long\n", name ? name : "");
-        return -EINVAL;
-    }
+    rc = halpr_name_check("signal", name, HAL_NAME_LEN);
+    if (rc < 0)
+        return rc;
     if (type < HAL_BIT || type > HAL_U64) {
         HAL_ERR("signal type not one of HAL_BIT, HAL_FLOAT, HAL_S32, HAL_U32, HAL_S64, HAL_U64 or HAL_PORT\n");
         return -EINVAL;

@@ -12,7 +12,7 @@ struct hal_stream_shm {
     unsigned magic;
     volatile unsigned in;            /* next slot to write */
     volatile unsigned out;           /* next slot to read */
-    unsigned this_sample;            /* sample number of the next write */
+    unsigned this_sample;            /* sample number of the last write (records are numbered from 1) */
     int depth;                       /* slots; holds depth-1 records */
     int num_pins;
     volatile int num_overruns;
@@ -86,6 +86,8 @@ int hal_stream_create(hal_stream_t *stream, int comp_id, int key, int depth, con
         HAL_ERR("stream: depth %d must be at least 2\n", depth);
         return -EINVAL;
     }
+    if (rtapi_instance() < 0)
+        return -EINVAL;
     id = hal_stream_get_new(rtapi_instance_key(key), hal_stream_bytes(depth, n));
     if (id < 0) {
         HAL_ERR("stream: could not create shared memory for key 0x%x: %s\n", key, strerror(errno));
@@ -140,10 +142,13 @@ static int hal_stream_check(struct hal_stream_shm *f, const char *typestring)
    (callers such as halsampler report it in their own words). */
 int hal_stream_attach(hal_stream_t *stream, int comp_id, int key, const char *typestring)
 {
-    int id = shmget(rtapi_instance_key(key), 0, 0600);
+    int id;
     void *p;
     int rc;
 
+    if (rtapi_instance() < 0)
+        return -EINVAL;
+    id = shmget(rtapi_instance_key(key), 0, 0600);
     if (id < 0)
         return -ENOENT;
     p = shmat(id, NULL, 0);
@@ -250,7 +255,7 @@ int hal_stream_write(hal_stream_t *stream, union hal_stream_data *buf)
     in = f->in;
     slot = &f->data[(size_t)in * (f->num_pins + 1)];
     memcpy(slot, buf, f->num_pins * sizeof(*buf));
-    slot[f->num_pins].u = f->this_sample++;
+    slot[f->num_pins].u = ++f->this_sample;
     __atomic_store_n(&f->in, (in + 1) % f->depth, __ATOMIC_RELEASE);
     return 0;
 }

@@ -1,4 +1,5 @@
 /* hal_thread.c: realtime threads: creation with period/priority rules, deletion, start/stop. */
+#include <limits.h>
 #include "hal_internal.h"
 #include <stdio.h>
 
@@ -139,15 +140,20 @@ static int hal_thread_precheck(const char *name, unsigned long period_nsec)
         HAL_ERR("create_thread called with period of zero\n");
         return -EINVAL;
     }
+    if (period_nsec < RTAPI_MIN_PERIOD_NS) {
+        HAL_ERR("thread '%s': period %lu ns is shorter than %d ns; no machine runs a thread that often\n",
+                name ? name : "", period_nsec, RTAPI_MIN_PERIOD_NS);
+        return -EINVAL;
+    }
+    if (period_nsec > LONG_MAX / 4) {
+        HAL_ERR("thread '%s': period %lu ns is too long\n", name ? name : "", period_nsec);
+        return -EINVAL;
+    }
     if (hal_data->lock & HAL_LOCK_CONFIG) {
         HAL_ERR("create_thread called while HAL is locked\n");
         return -EPERM;
     }
-    if (!name || strlen(name) > HAL_NAME_LEN) {
-        HAL_ERR("thread name '%s' is too long\n", name ? name : "");
-        return -EINVAL;
-    }
-    return 0;
+    return halpr_name_check("thread", name, HAL_NAME_LEN);
 }
 
 /* Create a periodic realtime thread (RT process only). */

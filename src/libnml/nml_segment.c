@@ -12,6 +12,7 @@
 #include <unistd.h>
 
 #include "nml_shm.h"
+#include "rtapi_instance.h"
 
 /* Segment bytes for a B line: header plus data rounded up to the alignment. */
 static size_t segment_bytes(const nml_buffer_cfg_t *b)
@@ -197,8 +198,12 @@ static int segment_create(struct nml_channel *ch, char *err, size_t errlen)
 /* Create or attach the segment of a channel. */
 int nml_segment_open(struct nml_channel *ch, char *err, size_t errlen)
 {
-    ch->key = nml_buffer_key(&ch->buffer);
     ch->shmid = -1;
+    if (rtapi_instance() < 0) {
+        snprintf(err, errlen, "%s: OPENEMC_INSTANCE is not an instance number 0..255", ch->buffer.name);
+        return -EINVAL;
+    }
+    ch->key = nml_buffer_key(&ch->buffer);
     if (ch->process.master)
         return segment_create(ch, err, errlen);
     return segment_attach(ch, err, errlen);

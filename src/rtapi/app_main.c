@@ -17,13 +17,15 @@
 #define REPLY_BYTES RTAPI_WIRE_MAX
 #define EXIT_WAIT_TICKS 500
 
-/* Print the usage text. */
-static int usage(void)
+/* Print the usage text to out; returns status. */
+static int usage(FILE *out, int status)
 {
-    fprintf(stderr, "Usage: rtapi_app start | ping | exit | check_rt | list\n"
+    fprintf(out, "Usage: rtapi_app start | ping | exit | check_rt | list\n"
             "       rtapi_app load <module> [name=value ...] | unload <module> ...\n"
-            "       rtapi_app debug <0..5> | newinst <comp> <name> [args]\n");
-    return 1;
+            "       rtapi_app debug <0..5> | newinst <comp> <name> [args]\n"
+            "The realtime master of instance $OPENEMC_INSTANCE (0..255, default 0): 'start' runs it,\n"
+            "the other commands are sent to it (a missing master is started first).\n");
+    return status;
 }
 
 /* Send a command to a running master (autostart as asked) and print its reply. */
@@ -150,7 +152,13 @@ static int do_check_rt(void)
 int main(int argc, char **argv)
 {
     if (argc < 2)
-        return usage();
+        return usage(stderr, 1);
+    if (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0)
+        return usage(stdout, 0);
+    if (argv[1][0] == '-') {
+        fprintf(stderr, "rtapi_app: unknown option '%s'\n", argv[1]);
+        return usage(stderr, 1);
+    }
     if (strcmp(argv[1], "start") == 0)
         return do_start();
     if (strcmp(argv[1], "ping") == 0)

@@ -10,6 +10,11 @@ while [ "$n" -gt 0 ]; do
         --bin) [ "$n" -ge 1 ] || { echo "latency-histogram: --bin needs a value" >&2; exit 1; }
                bin=$1; shift; n=$((n - 1)) ;;
         --bin=*) bin=${a#--bin=} ;;
+        --help|-h)
+            echo "Usage: latency-histogram [-t SECONDS] [--bin NS] [base_period [servo_period]]"
+            echo "Runs latency-test and prints a text histogram of each thread's wake-up jitter,"
+            echo "in bins of NS nanoseconds (default 1000). Other options: see latency-test --help."
+            exit 0 ;;
         *) set -- "$@" "$a" ;;
     esac
 done

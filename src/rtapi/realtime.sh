@@ -4,10 +4,24 @@
 
 here=$(cd "$(dirname "$0")" && pwd)
 if [ -x "$here/rtapi_app" ]; then RTAPI_APP=$here/rtapi_app; else RTAPI_APP=rtapi_app; fi
+case "${1:-}" in
+    --help|-h)
+        echo "Usage: realtime {start|load|stop|unload|restart|status|verify}"
+        echo "Starts, stops or checks the rtapi_app master of instance \$OPENEMC_INSTANCE (0..255,"
+        echo "default 0); stop also removes that instance's shared memory. verify prints the"
+        echo "kind of realtime this machine offers and exits 0 only when it is realtime."
+        exit 0 ;;
+esac
 instance=${OPENEMC_INSTANCE:-0}
-case "$instance" in ''|*[!0-9]*) instance=0 ;; esac
-# numbers above 255 fold into 1..255 exactly as rtapi_instance() does
-[ "$instance" -gt 255 ] && instance=$(( 1 + instance % 255 ))
+# a decimal 0..255, as rtapi_instance() accepts; anything else would share another session
+case "$instance" in
+    [0-9]|[0-9][0-9]|[0-9][0-9][0-9]) instance=$((10#$instance)) ;;
+    *) instance=256 ;;
+esac
+if [ "$instance" -gt 255 ]; then
+    echo "realtime: OPENEMC_INSTANCE='$OPENEMC_INSTANCE' is not an instance number 0..255" >&2
+    exit 1
+fi
 
 # instance_key BASE: the SysV key this instance uses for a LinuxCNC base key
 instance_key() {
@@ -25,18 +39,17 @@ remove_shm() {
 
 # master_pids: pids of live rtapi_app processes of this instance
 master_pids() {
-    local d env state comm
-    for d in /proc/[0-9]*; do
-        comm=
-        { read -r comm < "$d/comm"; } 2>/dev/null
-        [ "$comm" = rtapi_app ] || continue
-        state=$(sed -n 's/^State:[[:space:]]*\(.\).*/\1/p' "$d/status" 2>/dev/null)
+    local pid env state
+    for pid in $(pgrep -x rtapi_app); do
+        state=$(sed -n 's/^State:[[:space:]]*\(.\).*/\1/p' "/proc/$pid/status" 2>/dev/null)
         [ -n "$state" ] && [ "$state" != Z ] || continue
-        env=$( (tr "\\0" "\\n" < "$d/environ") 2>/dev/null | sed -n "s/^OPENEMC_INSTANCE=//p")
-        env=${env:-0}
-        case "$env" in *[!0-9]*) env=0 ;; esac
-        [ "$env" -gt 255 ] && env=$(( 1 + env % 255 ))
-        [ "$env" = "$instance" ] && echo "${d#/proc/}"
+        env=$( (tr "\\0" "\\n" < "/proc/$pid/environ") 2>/dev/null | sed -n "s/^OPENEMC_INSTANCE=//p")
+        case "$env" in
+            '') env=0 ;;
+            [0-9]|[0-9][0-9]|[0-9][0-9][0-9]) env=$((10#$env)) ;;
+            *) continue ;;
+        esac
+        [ "$env" = "$instance" ] && echo "$pid"
     done
 }
 

@@ -22,6 +22,7 @@ RTAPI_BEGIN_DECLS
 #define RTAPI_MAX_MODULES 1024
 #define RTAPI_MAX_TASKS 1024
 #define RTAPI_MAX_SHMEMS 64
+#define RTAPI_MIN_PERIOD_NS 1000   /* shortest task period accepted: no machine wakes a thread more often */
 #define RTAPI_NO_FP 0
 #define RTAPI_USES_FP 1
 

@@ -1,41 +1,42 @@
 /* rtapi_instance.c: instance number from OPENEMC_INSTANCE and the names derived from it. */
+#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 #include <pwd.h>
 #include <unistd.h>
 #include "rtapi_instance.h"
 
-/* Parse $OPENEMC_INSTANCE once. 0..255 are used as they are; larger numbers
-   (e.g. runners that use PIDs) fold into 1..255 as 1 + value % 255 so they
-   still get an instance of their own; non-numbers mean 0 (with a note). */
+/* Parse $OPENEMC_INSTANCE once: unset or empty is 0, a decimal 0..255 is itself. Anything else
+   is refused (reported once), because two sessions must never share keys or sockets. */
 int rtapi_instance(void)
 {
     static int instance = -1;
     const char *text;
-    char *end;
-    long value;
+    long value = 0;
 
-    if (instance >= 0)
+    if (instance != -1)
         return instance;
     text = getenv("OPENEMC_INSTANCE");
-    value = 0;
     if (text && *text) {
-        value = strtol(text, &end, 10);
-        if (*end || value < 0) {
-            fprintf(stderr, "rtapi: OPENEMC_INSTANCE='%s' is not a number >= 0, using 0\n",
-                    text);
-            value = 0;
-        }
+        size_t digits = strspn(text, "0123456789");
+        value = digits > 0 && digits <= 3 && text[digits] == '\0' ? strtol(text, NULL, 10) : -1;
     }
-    if (value > RTAPI_MAX_INSTANCE)
-        value = 1 + value % RTAPI_MAX_INSTANCE;
+    if (value < 0 || value > RTAPI_MAX_INSTANCE) {
+        fprintf(stderr, "rtapi: OPENEMC_INSTANCE='%s' is not an instance number 0..%d; "
+                "refusing to share another session's HAL and RTAPI\n", text, RTAPI_MAX_INSTANCE);
+        instance = -EINVAL;
+        return instance;
+    }
     instance = (int)value;
     return instance;
 }
 
-/* The key this instance uses for a LinuxCNC base key. */
+/* The key this instance uses for a LinuxCNC base key (-1 for an invalid instance). */
 int rtapi_instance_key(int base_key)
 {
+    if (rtapi_instance() < 0)
+        return -1;
     return (int)((unsigned)base_key ^ ((unsigned)rtapi_instance() << 24));
 }
 
@@ -63,6 +64,8 @@ int rtapi_instance_socket_name(char *buf, unsigned long size)
         len = snprintf(buf, size, "%s", path);
     else
         len = snprintf(buf, size, "%s/.rtapi_fifo", home_dir());
+    if (rtapi_instance() < 0)
+        return -1;
     if (len >= 0 && rtapi_instance() != 0 && (unsigned long)len < size)
         len += snprintf(buf + len, size - len, ".%d", rtapi_instance());
     if (len < 0 || (unsigned long)len >= size)

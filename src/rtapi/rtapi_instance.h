@@ -13,10 +13,11 @@ extern "C" {
 
 #define RTAPI_MAX_INSTANCE 255
 
-/* This process's instance number: $OPENEMC_INSTANCE, default 0. Values above
-   255 fold into 1..255 as 1 + value % 255 (scripts must do the same). */
+/* This process's instance number: $OPENEMC_INSTANCE (decimal 0..255), default 0; -EINVAL
+   (reported once on stderr) for anything else, and then nothing may attach. */
 int rtapi_instance(void);
-/* base ^ (instance << 24): the SysV key this instance uses for base. */
+/* base ^ (instance << 24): the SysV key this instance uses for base; -1 when the instance
+   is invalid (check rtapi_instance() first). */
 int rtapi_instance_key(int base_key);
 /* Abstract socket name of this instance's master (without the leading NUL). */
 int rtapi_instance_socket_name(char *buf, unsigned long size);

@@ -68,7 +68,7 @@ int rtapi_shmem_new(int key, int module_id, unsigned long int size)
     int slot;
 
     (void)module_id;
-    if (size == 0)
+    if (size == 0 || rtapi_instance() < 0)
         return -EINVAL;
     pthread_mutex_lock(&shmem_lock);
     slot = find_key(ikey);

@@ -1,5 +1,6 @@
 /* rtapi_task.c: task table: create, start, pause, resume, delete and statistics. */
 #define _GNU_SOURCE
+#include <limits.h>
 #include <pthread.h>
 #include <sched.h>
 #include <stdio.h>
@@ -108,7 +109,12 @@ int rtapi_task_start(int task_id, unsigned long int period_nsec)
     pthread_attr_t attr;
     int rc;
 
-    if (!task || task->started || period_nsec == 0)
+    if (period_nsec < RTAPI_MIN_PERIOD_NS || period_nsec > LLONG_MAX / 4) {
+        rtapi_print_msg(RTAPI_MSG_ERR, "rtapi: task %d: period %lu ns is outside %d ns .. %lld ns\n",
+                        task_id, period_nsec, RTAPI_MIN_PERIOD_NS, LLONG_MAX / 4);
+        return -EINVAL;
+    }
+    if (!task || task->started)
         return -EINVAL;
     rtapi_rt_announce();
     rtapi_rt_harden();

@@ -2,6 +2,8 @@
 #define _GNU_SOURCE
 #include <alloca.h>
 #include <pthread.h>
+#include <sched.h>
+#include <stdatomic.h>
 #include <stdio.h>
 #include <string.h>
 #include <time.h>
@@ -15,14 +17,38 @@ static __thread rtapi_task_t *self_task;   /* the calling task's record (no tabl
 /* Non-realtime mode: held by a task except while it sleeps, so tasks never overlap. */
 static pthread_mutex_t nonrt_lock = PTHREAD_MUTEX_INITIALIZER;
 static __thread int nonrt_depth;
+/* Non-task threads (the master serving a command, shutdown) waiting for the mutex: a task that
+   overruns lets them in instead of keeping the mutex through back-to-back catch-up cycles. */
+static atomic_int command_waiters;
 
 /* Take the non-realtime mutex (nesting per thread); no-op when realtime. */
 void rtapi_tasks_lock(void)
 {
     if (rtapi_rt_enabled())
         return;
-    if (nonrt_depth++ == 0)
+    if (nonrt_depth++ != 0)
+        return;
+    if (rtapi_self_task >= 0) {
         pthread_mutex_lock(&nonrt_lock);
+        return;
+    }
+    atomic_fetch_add(&command_waiters, 1);
+    pthread_mutex_lock(&nonrt_lock);
+    atomic_fetch_sub(&command_waiters, 1);
+}
+
+/* An overrunning task never sleeps, so it hands the mutex to waiting commands here and
+   waits until they have taken it (without this, stop and unload could never get in). */
+static void yield_to_commands(void)
+{
+    int depth;
+
+    if (atomic_load(&command_waiters) == 0)
+        return;
+    depth = rtapi_tasks_release_all();
+    while (atomic_load(&command_waiters) > 0)
+        sched_yield();
+    rtapi_tasks_relock(depth);
 }
 
 /* Release one level of the non-realtime mutex. */
@@ -163,6 +189,7 @@ void rtapi_wait(void)
     if (now >= deadline) {
         task->stats.overruns++;
         report_overrun(task);
+        yield_to_commands();
     } else {
         sleep_until(deadline);
     }

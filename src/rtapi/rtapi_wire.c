@@ -177,6 +177,8 @@ static int socket_address(struct sockaddr_un *addr)
 
     memset(addr, 0, sizeof *addr);
     addr->sun_family = AF_UNIX;
+    if (rtapi_instance() < 0)
+        return -EINVAL;
     len = rtapi_instance_socket_name(addr->sun_path + 1, sizeof addr->sun_path - 1);
     if (len < 0)
         return -ENAMETOOLONG;

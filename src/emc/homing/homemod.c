@@ -39,7 +39,7 @@ static int h_init(const home_env_t *env)
     if (env->num_joints < 1 || env->num_joints > HOME_MAX_JOINTS || !env->joints ||
         !env->report || !env->set_position || !env->set_motor_zero)
         return -EINVAL;
-    memset(&home.joint, 0, sizeof home.joint);
+    memset(&home, 0, sizeof home);
     home.env = *env;
     home.num_joints = env->num_joints;
     home.pins = hal_malloc(env->num_joints * sizeof(home_pins_t));

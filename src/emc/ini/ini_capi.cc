@@ -1,16 +1,16 @@
-// ini_capi.cc: the C API of the INI library (ini_open/ini_find handles and LinuxCNC-style iniFind on FILE*).
+// ini_capi.cc: the C API of the INI library (LinuxCNC's path-based iniFind* and ini_open/ini_find handles).
 #include "inifile.h"
 #include "inifile.hh"
 
 #include <cerrno>
 #include <climits>
+#include <cstring>
 #include <map>
 #include <memory>
 #include <mutex>
 #include <string>
 #include <sys/stat.h>
 #include <tuple>
-#include <unistd.h>
 
 struct ini_file {
     IniFile ini;
@@ -24,31 +24,35 @@ std::string section_arg(const char *section)
     return section ? section : "";
 }
 
-// Identity of an open file's current content, used as cache key.
-using FileId = std::tuple<dev_t, ino_t, long, long, off_t>;
+// Identity of a file's current content, used as cache key with its path.
+using FileId = std::tuple<std::string, dev_t, ino_t, long, long, off_t>;
 
-// Parsed files behind iniFind, kept for the life of the process so returned pointers stay valid.
+// Files parsed for the path-based API, kept for the life of the process (each parsed once per
+// content, so their warnings are printed once).
 std::map<FileId, std::unique_ptr<IniFile>> file_cache;
 std::mutex file_cache_lock;
 
-// Parse (or reuse) the INI file open as fp; nullptr when it cannot be loaded.
-const IniFile *cached_file(FILE *fp)
+// Parse (or reuse) the INI file at path; nullptr when it cannot be loaded.
+const IniFile *cached_file(const char *path)
 {
     struct stat st;
-    if (!fp || fstat(fileno(fp), &st) != 0) return nullptr;
-    FileId id{st.st_dev, st.st_ino, long(st.st_mtim.tv_sec), long(st.st_mtim.tv_nsec), st.st_size};
+    if (stat(path, &st) != 0) st = {};
+    FileId id{path, st.st_dev, st.st_ino, long(st.st_mtim.tv_sec), long(st.st_mtim.tv_nsec), st.st_size};
     std::lock_guard<std::mutex> guard(file_cache_lock);
     auto found = file_cache.find(id);
     if (found != file_cache.end()) return found->second->IsOpen() ? found->second.get() : nullptr;
-    char link[64], path[PATH_MAX];
-    snprintf(link, sizeof link, "/proc/self/fd/%d", fileno(fp));
-    ssize_t n = readlink(link, path, sizeof path - 1);
-    if (n <= 0) return nullptr;
-    path[n] = '\0';
     std::unique_ptr<IniFile> ini(new IniFile(path));
     const IniFile *result = ini->IsOpen() ? ini.get() : nullptr;
-    file_cache[id] = std::move(ini);
+    if (result) file_cache[id] = std::move(ini);
     return result;
+}
+
+// The file behind a path-based lookup and the section to search; nullptr on bad arguments or
+// a file that cannot be loaded.
+const IniFile *lookup_file(const char *inipath, const char *tag, const void *result)
+{
+    if (!inipath || !tag || !result) return nullptr;
+    return cached_file(inipath);
 }
 
 // Store a converted value or map the lookup outcome to -ENOENT / -EINVAL.
@@ -118,33 +122,75 @@ int ini_find_bool(const ini_file_t *ini, const char *key, const char *section, i
     return store(ini->ini, key, section, num, ini->ini.FindBool(key, section_arg(section), num), value);
 }
 
-// LinuxCNC-style first value of tag in section.
-const char *iniFind(FILE *fp, const char *tag, const char *section)
+// Copy file with "~/" expanded into path.
+int TildeExpansion(const char *file, char *path, size_t size)
 {
-    const IniFile *ini = cached_file(fp);
-    if (!ini || !tag) return nullptr;
+    if (!file || !path || size == 0) return -EINVAL;
+    std::optional<std::string> expanded = IniFile::TildeExpandStrict(file);
+    if (!expanded) return -ENOENT;
+    if (expanded->size() >= size) return -ENOSPC;
+    memcpy(path, expanded->c_str(), expanded->size() + 1);
+    return 0;
+}
+
+// First value of tag, copied into buf.
+int iniFindString(const char *inipath, const char *tag, const char *section, char *buf, size_t bufsize)
+{
+    const IniFile *ini = lookup_file(inipath, tag, buf);
+    if (!ini || bufsize == 0) return -EINVAL;
     const IniEntry *entry = ini->FindEntry(tag, section_arg(section), 1);
-    return entry ? entry->value.c_str() : nullptr;
-}
-
-// LinuxCNC-style int lookup: 0 ok, -1 missing/invalid/out of int range.
-int iniFindInt(FILE *fp, const char *tag, const char *section, int *result)
-{
-    const IniFile *ini = cached_file(fp);
-    if (!ini || !tag || !result) return -1;
-    std::optional<long long> value = ini->FindInt(tag, section_arg(section), 1);
-    if (!value || *value < INT_MIN || *value > INT_MAX) return -1;
-    *result = int(*value);
+    if (!entry) return -ENOENT;
+    if (entry->value.size() >= bufsize) return -ENOSPC;
+    memcpy(buf, entry->value.c_str(), entry->value.size() + 1);
     return 0;
 }
 
-// LinuxCNC-style double lookup: 0 ok, -1 missing/invalid.
-int iniFindDouble(FILE *fp, const char *tag, const char *section, double *result)
+// Store a typed lookup's value: 0, or -ENOENT when missing or not convertible.
+template <typename T, typename U>
+int store_first(const std::optional<U> &value, T *result)
 {
-    const IniFile *ini = cached_file(fp);
-    if (!ini || !tag || !result) return -1;
-    std::optional<double> value = ini->FindReal(tag, section_arg(section), 1);
-    if (!value) return -1;
-    *result = *value;
+    if (!value) return -ENOENT;
+    *result = T(*value);
     return 0;
+}
+
+// First value of tag as a boolean.
+int iniFindBool(const char *inipath, const char *tag, const char *section, bool *result)
+{
+    const IniFile *ini = lookup_file(inipath, tag, result);
+    if (!ini) return -EINVAL;
+    return store_first(ini->FindBool(tag, section_arg(section), 1), result);
+}
+
+// First value of tag as a signed 64-bit integer.
+int iniFindSInt(const char *inipath, const char *tag, const char *section, rtapi_s64 *result)
+{
+    const IniFile *ini = lookup_file(inipath, tag, result);
+    if (!ini) return -EINVAL;
+    return store_first(ini->FindInt(tag, section_arg(section), 1), result);
+}
+
+// First value of tag as an unsigned 64-bit integer.
+int iniFindUInt(const char *inipath, const char *tag, const char *section, rtapi_u64 *result)
+{
+    const IniFile *ini = lookup_file(inipath, tag, result);
+    if (!ini) return -EINVAL;
+    return store_first(ini->FindUInt(tag, section_arg(section), 1), result);
+}
+
+// First value of tag as a real.
+int iniFindDouble(const char *inipath, const char *tag, const char *section, double *result)
+{
+    const IniFile *ini = lookup_file(inipath, tag, result);
+    if (!ini) return -EINVAL;
+    return store_first(ini->FindReal(tag, section_arg(section), 1), result);
+}
+
+// iniFindSInt truncated to int.
+int iniFindInt(const char *inipath, const char *tag, const char *section, int *result)
+{
+    rtapi_s64 value = 0;
+    int rc = result ? iniFindSInt(inipath, tag, section, &value) : -EINVAL;
+    if (rc == 0) *result = int(value);
+    return rc;
 }

@@ -23,44 +23,20 @@ IniConv tail_state(const char *end)
     return (*end == '\0' || is_blank(*end)) ? IniConv::ok : IniConv::trailing;
 }
 
-// Parse the magnitude of an integer (after the sign) with its prefix; end points past the digits.
-bool parse_magnitude(const char *p, unsigned long long &mag, const char **end, bool &overflow)
+// Split an integer's text into the digits to convert and their base: an optional sign is kept,
+// a 0x/0o/0b prefix after it (followed by at least one character) is removed.
+int strip_radix_prefix(std::string &digits)
 {
-    int base = 10;
-    if (p[0] == '0' && (p[1] == 'x' || p[1] == 'X') && isxdigit((unsigned char)p[2])) {
-        base = 16;
-        p += 2;
-    } else if (p[0] == '0' && (p[1] == 'o' || p[1] == 'O') && p[2] >= '0' && p[2] <= '7') {
-        base = 8;
-        p += 2;
-    } else if (p[0] == '0' && (p[1] == 'b' || p[1] == 'B') && (p[2] == '0' || p[2] == '1')) {
-        base = 2;
-        p += 2;
+    size_t sign = digits.size() > 1 && (digits[0] == '-' || digits[0] == '+') ? 1 : 0;
+    if (digits.size() <= sign + 2 || digits[sign] != '0') return 10;
+    static const struct { char letter; int base; } prefixes[] = {{'x', 16}, {'o', 8}, {'b', 2}};
+    for (const auto &prefix : prefixes) {
+        if ((digits[sign + 1] | 0x20) == prefix.letter) {
+            digits.erase(sign, 2);
+            return prefix.base;
+        }
     }
-    if (!isdigit((unsigned char)*p) && !(base == 16 && isxdigit((unsigned char)*p))) return false;
-    char *stop = nullptr;
-    errno = 0;
-    mag = strtoull(p, &stop, base);
-    overflow = errno == ERANGE;
-    *end = stop;
-    return true;
-}
-
-// An integer's text split into sign and magnitude.
-struct IntText {
-    bool negative = false;
-    unsigned long long mag = 0;
-    const char *end = nullptr;  // past the digits
-    bool overflow = false;      // the magnitude does not fit 64 bits
-};
-
-// Parse an optional sign and an integer magnitude; false when no digits follow.
-bool parse_integer(const std::string &text, IntText &num)
-{
-    const char *p = text.c_str();
-    num.negative = *p == '-';
-    if (*p == '-' || *p == '+') p++;
-    return parse_magnitude(p, num.mag, &num.end, num.overflow);
+    return 10;
 }
 
 } // namespace
@@ -82,38 +58,43 @@ std::string ini_rtrim(const std::string &text)
     return text.substr(0, e);
 }
 
-// [A-Za-z0-9_]+ not starting with a digit.
-bool ini_valid_identifier(const std::string &name)
+// Only [A-Za-z0-9_] characters (ASCII; the caller checks for a leading digit).
+bool ini_identifier_chars(const std::string &name)
 {
-    if (name.empty() || isdigit((unsigned char)name[0])) return false;
-    for (char c : name)
-        if (!isalnum((unsigned char)c) && c != '_') return false;
+    for (char c : name) {
+        bool ok = (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_';
+        if (!ok) return false;
+    }
     return true;
 }
 
-// Signed integer conversion with range check.
+// Signed integer conversion; out-of-range values are invalid.
 IniConv ini_parse_int(const std::string &text, long long &value)
 {
-    IntText num;
-    if (!parse_integer(text, num)) return IniConv::invalid;
-    unsigned long long limit = num.negative ? (unsigned long long)LLONG_MAX + 1 : LLONG_MAX;
-    if (num.overflow || num.mag > limit) return IniConv::range;
-    value = num.negative ? (long long)(0ULL - num.mag) : (long long)num.mag;
-    return tail_state(num.end);
+    std::string digits = text;
+    int base = strip_radix_prefix(digits);
+    char *end = nullptr;
+    errno = 0;
+    long long v = strtoll(digits.c_str(), &end, base);
+    if (end == digits.c_str() || errno != 0) return IniConv::invalid;
+    value = v;
+    return tail_state(end);
 }
 
-// Unsigned integer conversion; negative values wrap modulo 2^64.
-IniConv ini_parse_uint(const std::string &text, unsigned long long &value, bool &wrapped)
+// Unsigned integer conversion; negative values wrap modulo 2^64 as strtoull does.
+IniConv ini_parse_uint(const std::string &text, unsigned long long &value)
 {
-    IntText num;
-    if (!parse_integer(text, num)) return IniConv::invalid;
-    if (num.overflow) return IniConv::range;
-    wrapped = num.negative && num.mag != 0;
-    value = num.negative ? 0ULL - num.mag : num.mag;
-    return tail_state(num.end);
+    std::string digits = text;
+    int base = strip_radix_prefix(digits);
+    char *end = nullptr;
+    errno = 0;
+    unsigned long long v = strtoull(digits.c_str(), &end, base);
+    if (end == digits.c_str() || errno != 0) return IniConv::invalid;
+    value = v;
+    return tail_state(end);
 }
 
-// Real conversion in the C locale, whatever the program's locale.
+// Real conversion in the C locale, whatever the program's locale; overflow and underflow are invalid.
 IniConv ini_parse_real(const std::string &text, double &value)
 {
     static locale_t c_locale = newlocale(LC_ALL_MASK, "C", (locale_t)0);
@@ -121,8 +102,7 @@ IniConv ini_parse_real(const std::string &text, double &value)
     char *end = nullptr;
     errno = 0;
     double v = strtod_l(p, &end, c_locale);
-    if (end == p || is_blank(*p)) return IniConv::invalid;
-    if (errno == ERANGE && (v > 1.0 || v < -1.0)) return IniConv::range;
+    if (end == p || errno != 0) return IniConv::invalid;
     value = v;
     return tail_state(end);
 }

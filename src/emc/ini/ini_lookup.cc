@@ -36,12 +36,17 @@ std::optional<std::string> IniFile::Find(const std::string &key, const std::stri
     return entry->value;
 }
 
-// Print "<file>:<line>: <level>: <what> [S]K='value'" unless quiet.
+// Print "<file>:<line>: <level>: <what>" unless quiet.
 void IniFile::Diagnose(const IniEntry &entry, const char *level, const std::string &what) const
 {
     if (quiet_) return;
-    fprintf(stderr, "%s:%d: %s: %s [%s]%s='%s'\n", entry.file.c_str(), entry.line, level,
-            what.c_str(), entry.section.c_str(), entry.key.c_str(), entry.value.c_str());
+    fprintf(stderr, "%s:%d: %s: %s\n", entry.file.c_str(), entry.line, level, what.c_str());
+}
+
+// "[S]K='value'" of an entry, as diagnostics quote it.
+static std::string quoted(const IniEntry &entry)
+{
+    return "[" + entry.section + "]" + entry.key + "='" + entry.value + "'";
 }
 
 // Report the outcome of a number conversion; true when the number may be used.
@@ -49,10 +54,10 @@ bool IniFile::NumberUsable(const IniEntry &entry, int conv, const char *kind) co
 {
     IniConv c = IniConv(conv);
     if (c == IniConv::trailing)
-        Diagnose(entry, "warning", std::string("Trailing character(s) after ") + kind);
-    if (c == IniConv::invalid) Diagnose(entry, "error", std::string("Invalid ") + kind);
-    if (c == IniConv::range) Diagnose(entry, "error", std::string("Out of range ") + kind);
-    return c == IniConv::ok || c == IniConv::trailing;
+        Diagnose(entry, "warning", std::string("Trailing character(s) in ") + kind + " conversion (" +
+                                       quoted(entry) + ")");
+    if (c == IniConv::invalid) Diagnose(entry, "error", std::string("Invalid ") + kind + " " + quoted(entry));
+    return c != IniConv::invalid;
 }
 
 // Signed integer value.
@@ -67,18 +72,18 @@ std::optional<long long> IniFile::FindInt(const std::string &key, const std::str
     return value;
 }
 
-// Unsigned integer value (negative values wrap, with a warning).
+// Unsigned integer value (a negative value wraps, after a warning).
 std::optional<unsigned long long> IniFile::FindUInt(const std::string &key,
                                                     const std::string &section, int num) const
 {
     const IniEntry *entry = FindEntry(key, section, num);
     unsigned long long value = 0;
-    bool wrapped = false;
     if (!entry) return std::nullopt;
-    IniConv conv = ini_parse_uint(ini_trim(entry->value), value, wrapped);
+    std::string text = ini_trim(entry->value);
+    if (!text.empty() && text[0] == '-')
+        Diagnose(*entry, "warning", "Unsigned integer conversion detected a leading minus sign (-)");
+    IniConv conv = ini_parse_uint(text, value);
     if (!NumberUsable(*entry, int(conv), "unsigned integer")) return std::nullopt;
-    if (wrapped)
-        Diagnose(*entry, "warning", "Negative value wrapped for unsigned integer");
     return value;
 }
 
@@ -102,7 +107,7 @@ std::optional<bool> IniFile::FindBool(const std::string &key, const std::string 
     bool value = false;
     if (!entry) return std::nullopt;
     if (!ini_parse_bool(ini_trim(entry->value), value)) {
-        Diagnose(*entry, "error", "Invalid boolean value");
+        Diagnose(*entry, "error", "Invalid boolean value " + quoted(*entry));
         return std::nullopt;
     }
     return value;
@@ -117,7 +122,7 @@ std::optional<T> IniFile::FindMapped(const std::string &key, const std::string &
     const IniEntry *entry = FindEntry(key, section, num);
     if (!entry) return std::nullopt;
     std::optional<T> value = map(ini_trim(entry->value));
-    if (!value) Diagnose(*entry, "error", invalid);
+    if (!value) Diagnose(*entry, "error", std::string(invalid) + " " + quoted(*entry));
     return value;
 }
 
@@ -208,7 +213,14 @@ std::vector<std::pair<std::string, std::string>> IniFile::Variables(const std::s
 // Leading "~/" -> "$HOME/".
 std::string IniFile::TildeExpand(const std::string &path)
 {
+    return TildeExpandStrict(path).value_or(path);
+}
+
+// Leading "~/" -> "$HOME/"; nullopt when HOME is needed but not set.
+std::optional<std::string> IniFile::TildeExpandStrict(const std::string &path)
+{
+    if (path.compare(0, 2, "~/") != 0) return path;
     const char *home = getenv("HOME");
-    if (path.compare(0, 2, "~/") != 0 || !home) return path;
+    if (!home) return std::nullopt;
     return std::string(home) + path.substr(1);
 }

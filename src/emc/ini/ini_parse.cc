@@ -12,214 +12,222 @@
 
 namespace {
 
-const int max_include_depth = 16;
+const size_t max_include_depth = 16;              // files open at once, the top file included
+const off_t max_file_bytes = 64 * 1024 * 1024;    // larger files (or endless devices) are refused
+const char utf8_bom[] = "\xEF\xBB\xBF";
 
-// Read a whole file; false with errno set when it cannot be read.
-bool read_file(const std::string &path, std::string &text)
-{
-    int fd = open(path.c_str(), O_RDONLY | O_CLOEXEC);
-    if (fd < 0) return false;
-    char buf[65536];
-    ssize_t n;
-    while ((n = read(fd, buf, sizeof buf)) > 0) text.append(buf, size_t(n));
-    int saved = errno;
-    close(fd);
-    errno = saved;
-    return n == 0;
-}
-
-// "errno=N (text)" as used in open failures.
+// "errno=N (text)" as used in file errors.
 std::string errno_text(int err)
 {
     return "errno=" + std::to_string(err) + " (" + strerror(err) + ")";
 }
 
-// Directory part of a path, with the trailing slash ("" for a bare name).
-std::string dir_of(const std::string &path)
+// Read a whole file (at most max_file_bytes); false after printing "<path>: error: ...".
+bool read_file(const std::string &path, std::string &text)
 {
-    size_t slash = path.rfind('/');
-    return slash == std::string::npos ? "" : path.substr(0, slash + 1);
+    int fd = open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0) {
+        fprintf(stderr, "%s: error: Cannot open ini-file (%s)\n", path.c_str(), errno_text(errno).c_str());
+        return false;
+    }
+    char buf[65536];
+    ssize_t n;
+    while ((n = read(fd, buf, sizeof buf)) != 0) {
+        if (n < 0 && errno == EINTR) continue;
+        if (n < 0) break;
+        text.append(buf, size_t(n));
+        if (text.size() > size_t(max_file_bytes)) break;
+    }
+    int saved = errno;
+    close(fd);
+    if (n < 0) {
+        fprintf(stderr, "%s: error: Cannot read ini-file (%s)\n", path.c_str(), errno_text(saved).c_str());
+        return false;
+    }
+    if (text.size() > size_t(max_file_bytes)) {
+        fprintf(stderr, "%s: error: Ini-file is larger than %lld bytes\n", path.c_str(),
+                (long long)max_file_bytes);
+        return false;
+    }
+    if (text.compare(0, 3, utf8_bom) == 0) text.erase(0, 3);
+    return true;
+}
+
+// How CheckName words its messages about a section or a tag name.
+struct NameWords {
+    const char *bad_chars;   // "Invalid <bad_chars> 'x'. Identifier contains invalid character(s)"
+    const char *digit;       // "Invalid <digit> 'x'. <digit_tail>"
+    const char *digit_tail;
+};
+const NameWords section_words = {"section", "section", "Cannot start with a digit"};
+const NameWords tag_words = {"tag name", "tag", "Tag identifiers cannot start with a digit"};
+
+// True for the blanks that separate words on a line.
+bool is_space(char c)
+{
+    return c == ' ' || c == '\t';
 }
 
 } // namespace
 
-// Parses one file (and its includes) into an IniFile.
+// Parses one file (and its includes) into an IniFile; stops at the first error.
 class IniParser {
 public:
     explicit IniParser(IniFile &ini) : ini_(ini) {}
-    // Parse a file; false when it could not be read or had a syntax error.
-    bool ParseFile(const std::string &path, int depth);
-    // True when no error was reported.
-    bool Ok() const { return ok_; }
+    // Parse a file; false when it could not be read or had a syntax error (reported on stderr).
+    bool ParseFile(const std::string &path);
 
 private:
-    void Report(const std::string &file, int line, const char *level, const std::string &what);
-    void HandleLine(const std::string &file, int line, const std::string &text, int depth);
-    void HandleSection(const std::string &file, int line, const std::string &text);
-    void HandleKey(const std::string &file, int line, const std::string &text);
-    bool CheckName(const std::string &file, int line, const char *kind, const std::string &name,
-                   const char *empty_error);
-    void HandleInclude(const std::string &file, int line, const std::string &name, int depth);
+    bool Report(const std::string &file, int line, const char *level, const std::string &what);
+    bool ParseText(const std::string &file, const std::string &text);
+    bool HandleLine(const std::string &file, int line, const std::string &text);
+    bool HandleSection(const std::string &file, int line, const std::string &text);
+    bool HandleKey(const std::string &file, int line, const std::string &text);
+    bool HandleInclude(const std::string &file, int line, const std::string &text);
+    bool CheckName(const std::string &file, int line, const std::string &name, const NameWords &words);
 
     IniFile &ini_;
-    int current_ = -1;                 // index of the current section, -1 none, -2 a bad header
+    int current_ = -1;                 // index of the current section, -1 before the first
     std::vector<std::string> stack_;   // canonical paths of the files being parsed
-    bool ok_ = true;
 };
 
-// Print a diagnostic "<file>:<line>: <level>: <what>"; errors make the file unloadable.
-void IniParser::Report(const std::string &file, int line, const char *level,
-                       const std::string &what)
+// Print "<file>:<line>: <level>: <what>"; returns true for warnings, false for errors.
+bool IniParser::Report(const std::string &file, int line, const char *level, const std::string &what)
 {
     fprintf(stderr, "%s:%d: %s: %s\n", file.c_str(), line, level, what.c_str());
-    if (strcmp(level, "error") == 0) ok_ = false;
+    return strcmp(level, "error") != 0;
 }
 
-// Split a file into logical lines (continuations joined) and handle each.
-bool IniParser::ParseFile(const std::string &path, int depth)
+// Read and parse one file, keeping it on the include stack meanwhile.
+bool IniParser::ParseFile(const std::string &path)
 {
     std::string text;
     if (!read_file(path, text)) return false;
     char *canon = realpath(path.c_str(), nullptr);
     stack_.push_back(canon ? canon : path);
     free(canon);
-    std::vector<std::string> lines;
+    bool ok = ParseText(path, text);
+    stack_.pop_back();
+    return ok;
+}
+
+// Split text into logical lines (a trailing '\' joins the next line) and handle each. A
+// continued line is numbered by its last physical line.
+bool IniParser::ParseText(const std::string &file, const std::string &text)
+{
+    std::string logical;
+    int line = 0;
     for (size_t start = 0; start < text.size();) {
         size_t nl = text.find('\n', start);
+        bool last = nl == std::string::npos || nl + 1 == text.size();
         if (nl == std::string::npos) nl = text.size();
-        lines.push_back(ini_rtrim(text.substr(start, nl - start)));
+        std::string physical = ini_rtrim(text.substr(start, nl - start));
         start = nl + 1;
+        line++;
+        bool continued = !physical.empty() && physical.back() == '\\';
+        if (continued) physical.pop_back();
+        logical += physical;
+        if (continued && last) return Report(file, line, "error", "Last line has a continuation");
+        if (continued) continue;
+        if (!HandleLine(file, line, logical)) return false;
+        logical.clear();
     }
-    for (size_t i = 0; i < lines.size(); i++) {
-        size_t first = i;
-        std::string logical = lines[i];
-        while (!logical.empty() && logical.back() == '\\' && i + 1 < lines.size()) {
-            logical.pop_back();
-            logical += lines[++i];
-        }
-        if (!logical.empty() && logical.back() == '\\') {
-            Report(path, int(i + 1), "error", "Last line has a continuation");
-            break;
-        }
-        HandleLine(path, int(first + 1), logical, depth);
-    }
-    stack_.pop_back();
     return true;
 }
 
-// Classify one logical line: blank, include, comment, section header or key.
-void IniParser::HandleLine(const std::string &file, int line, const std::string &text, int depth)
+// Classify one logical line: include, blank, comment, section header or key.
+bool IniParser::HandleLine(const std::string &file, int line, const std::string &text)
 {
-    if (text.find('\0') != std::string::npos) {
-        Report(file, line, "error", "Line contains a NUL character");
-        return;
-    }
-    if (text.compare(0, 8, "#INCLUDE") == 0 && text.size() > 8 &&
-        (text[8] == ' ' || text[8] == '\t')) {
-        HandleInclude(file, line, ini_trim(text.substr(8)), depth);
-        return;
-    }
-    std::string body = ini_trim(text);
-    if (body.empty() || body[0] == '#' || body[0] == ';') return;
-    if (body[0] == '[')
-        HandleSection(file, line, body);
-    else
-        HandleKey(file, line, body);
+    if (text.find('\0') != std::string::npos)
+        return Report(file, line, "error", "Embedded literal NUL character not supported");
+    if (text.compare(0, 8, "#INCLUDE") == 0) return HandleInclude(file, line, text);
+    size_t start = text.find_first_not_of(" \t\r\n\v\f");
+    if (start == std::string::npos || text[start] == '#' || text[start] == ';') return true;
+    std::string body = text.substr(start);
+    return body[0] == '[' ? HandleSection(file, line, body) : HandleKey(file, line, body);
 }
 
-// Report an empty name (empty_error) or one that is not an identifier; true when it is usable.
-bool IniParser::CheckName(const std::string &file, int line, const char *kind,
-                          const std::string &name, const char *empty_error)
+// Check a section or tag name: identifier characters first, then no leading digit.
+bool IniParser::CheckName(const std::string &file, int line, const std::string &name,
+                          const NameWords &words)
 {
-    if (name.empty()) {
-        Report(file, line, "error", empty_error);
-        return false;
-    }
-    if (!ini_valid_identifier(name)) {
-        Report(file, line, "error", std::string("Invalid ") + kind + " '" + name +
-                                        "'. Identifier contains invalid character(s)");
-        return false;
-    }
+    if (!ini_identifier_chars(name))
+        return Report(file, line, "error", std::string("Invalid ") + words.bad_chars + " '" + name +
+                                               "'. Identifier contains invalid character(s)");
+    if (name[0] >= '0' && name[0] <= '9')
+        return Report(file, line, "error", std::string("Invalid ") + words.digit + " '" + name +
+                                               "'. " + words.digit_tail);
     return true;
 }
 
 // "[NAME] trailing": start or resume a section.
-void IniParser::HandleSection(const std::string &file, int line, const std::string &text)
+bool IniParser::HandleSection(const std::string &file, int line, const std::string &text)
 {
-    current_ = -2;
     size_t close = text.find(']');
-    if (close == std::string::npos) {
-        Report(file, line, "error", "Invalid section. Missing ']'");
-        return;
-    }
+    if (close == std::string::npos) return Report(file, line, "error", "Invalid section. Missing ']'");
     std::string name = ini_trim(text.substr(1, close - 1));
-    if (!CheckName(file, line, "section", name,
-                   "Invalid section. No content between '[' and ']'"))
-        return;
+    if (name.empty())
+        return Report(file, line, "error", "Invalid section. No content between '[' and ']'");
+    if (!CheckName(file, line, name, section_words)) return false;
+    current_ = -1;
+    for (size_t i = 0; i < ini_.sections_.size() && current_ < 0; i++) {
+        if (ini_.sections_[i].name != name) continue;
+        Report(file, line, "warning", "Section '" + name + "' already exists. Merging...");
+        current_ = int(i);
+    }
+    if (current_ < 0) {
+        ini_.sections_.push_back(IniSection{name, {}});
+        current_ = int(ini_.sections_.size() - 1);
+    }
     std::string rest = ini_trim(text.substr(close + 1));
     if (!rest.empty() && rest[0] != '#' && rest[0] != ';')
         Report(file, line, "warning", "Section header has trailing content, ignored");
-    for (size_t i = 0; i < ini_.sections_.size(); i++) {
-        if (ini_.sections_[i].name == name) {
-            Report(file, line, "warning", "Section '" + name + "' already exists. Merging...");
-            current_ = int(i);
-            return;
-        }
-    }
-    ini_.sections_.push_back(IniSection{name, {}});
-    current_ = int(ini_.sections_.size() - 1);
+    return true;
 }
 
 // "KEY = value": add an entry to the current section.
-void IniParser::HandleKey(const std::string &file, int line, const std::string &text)
+bool IniParser::HandleKey(const std::string &file, int line, const std::string &text)
 {
-    size_t end = text.find_first_of(" \t=");
-    std::string tag = text.substr(0, end);
-    if (!CheckName(file, line, "tag", tag, "Missing tag identifier before '='")) return;
-    size_t eq = text.find_first_not_of(" \t", end);
-    if (eq == std::string::npos || text[eq] != '=') {
-        Report(file, line, "error", "Invalid tag '" + tag + "'. Expected '=' after tag identifier");
-        return;
-    }
-    if (current_ == -2) return;  // the bad header was reported already
-    if (current_ < 0) {
-        Report(file, line, "error", "Tag '" + tag + "' found without prior section definition");
-        return;
-    }
+    size_t eq = text.find('=');
+    if (eq == std::string::npos)
+        return Report(file, line, "error", "Invalid tag '" + text + "'. Expected '=' after tag identifier");
+    if (eq == 0) return Report(file, line, "error", "Invalid tag. Missing identifier before '='");
+    std::string tag = ini_rtrim(text.substr(0, eq));
+    if (!CheckName(file, line, tag, tag_words)) return false;
+    if (current_ < 0)
+        return Report(file, line, "error", "Tag '" + tag + "' found without prior section definition");
     std::string value, error;
     std::vector<std::string> warnings;
     bool decoded = ini_decode_escapes(ini_trim(text.substr(eq + 1)), value, warnings, error);
     for (const std::string &w : warnings) Report(file, line, "warning", w);
-    if (!decoded) {
-        Report(file, line, "error", error);
-        return;
-    }
+    if (!decoded) return Report(file, line, "error", error);
     IniSection &sec = ini_.sections_[size_t(current_)];
     sec.entries.push_back(IniEntry{tag, value, sec.name, file, line});
+    return true;
 }
 
-// "#INCLUDE name": parse another file in place, continuing the current section.
-void IniParser::HandleInclude(const std::string &file, int line, const std::string &name,
-                              int depth)
+// "#INCLUDE name": parse another file in place, continuing the current section. A relative
+// name is taken relative to the including file's directory.
+bool IniParser::HandleInclude(const std::string &file, int line, const std::string &text)
 {
+    if (text.size() <= 8 || !is_space(text[8]))
+        return Report(file, line, "error", "Missing filename after #INCLUDE");
+    std::string name = ini_trim(text.substr(8));
     std::string path = IniFile::TildeExpand(name);
-    if (path[0] != '/') path = dir_of(file) + path;
-    if (depth >= max_include_depth) {
-        Report(file, line, "error", "Include nesting too deep on loading '" + path + "'");
-        return;
-    }
+    if (path.compare(0, 2, "~/") == 0)
+        return Report(file, line, "error", "Failed to tilde-expand '" + name + "'");
+    size_t slash = file.rfind('/');
+    if (path[0] != '/' && slash != std::string::npos) path = file.substr(0, slash + 1) + path;
     char *canon = realpath(path.c_str(), nullptr);
     std::string key = canon ? canon : path;
     free(canon);
-    for (const std::string &open_file : stack_) {
-        if (open_file == key) {
-            Report(file, line, "error", "Include file recursion on loading '" + path + "'");
-            return;
-        }
-    }
-    if (!ParseFile(path, depth + 1))
-        Report(file, line, "error",
-               "Cannot open include file '" + path + "' (" + errno_text(errno) + ")");
+    for (const std::string &open_file : stack_)
+        if (open_file == key)
+            return Report(file, line, "error", "Include file recursion on loading '" + path + "'");
+    if (stack_.size() + 1 >= max_include_depth)
+        return Report(file, line, "error", "Maximum include depth (" + std::to_string(max_include_depth) +
+                                               ") reached on loading '" + path + "'");
+    return ParseFile(path);
 }
 
 // Parse `path` into this object (see inifile.hh).
@@ -228,13 +236,8 @@ bool IniFile::Open(const std::string &path)
     Close();
     path_ = path;
     IniParser parser(*this);
-    if (!parser.ParseFile(path, 0)) {
-        error_ = "Cannot open ini-file (" + errno_text(errno) + ")";
-        fprintf(stderr, "%s: error: %s\n", path.c_str(), error_.c_str());
-        return false;
-    }
-    if (!parser.Ok()) {
-        error_ = "Syntax error(s) in ini-file";
+    if (!parser.ParseFile(path)) {
+        error_ = "Cannot load ini-file '" + path + "'";
         sections_.clear();
         return false;
     }

@@ -1,12 +1,35 @@
-/* inifile.h: C API of the INI library (handle based, plus LinuxCNC-style iniFind on a FILE*). */
+/* inifile.h: C API of the INI library: LinuxCNC's path-based iniFind* lookups and a handle API. */
 #ifndef OPENEMC_INIFILE_H
 #define OPENEMC_INIFILE_H
 
-#include <stdio.h>
+#include <limits.h>
+#include <stdbool.h>
+#include <stddef.h>
+
+#include "rtapi_stdint.h"
 
 #ifdef __cplusplus
 extern "C" {
 #endif
+
+/* Longest line older callers size their buffers for (values themselves have no limit). */
+#define INI_MAX_LINELEN PATH_MAX
+
+/* Copy file with a leading "~/" replaced by $HOME/ into path (size bytes).
+   0 on success, -EINVAL on bad arguments, -ENOENT when HOME is unset, -ENOSPC when too long. */
+int TildeExpansion(const char *file, char *path, size_t size);
+
+/* Path-based lookups of the first `tag` in `section` (NULL or "" = any section) of the INI file
+   `inipath`. They return 0 on success, -EINVAL for a NULL argument or a file that cannot be
+   loaded, -ENOENT when the tag is missing or its value does not convert (the reason is printed
+   on stderr), and iniFindString -ENOSPC when buf cannot hold the value and its NUL. */
+int iniFindString(const char *inipath, const char *tag, const char *section, char *buf, size_t bufsize);
+int iniFindBool(const char *inipath, const char *tag, const char *section, bool *result);
+int iniFindSInt(const char *inipath, const char *tag, const char *section, rtapi_s64 *result);
+int iniFindUInt(const char *inipath, const char *tag, const char *section, rtapi_u64 *result);
+int iniFindDouble(const char *inipath, const char *tag, const char *section, double *result);
+/* iniFindSInt truncated to int, for older callers. */
+int iniFindInt(const char *inipath, const char *tag, const char *section, int *result);
 
 typedef struct ini_file ini_file_t;
 
@@ -27,13 +50,6 @@ int ini_find_double(const ini_file_t *ini, const char *key, const char *section,
                     double *value);
 int ini_find_bool(const ini_file_t *ini, const char *key, const char *section, int num,
                   int *value);
-
-/* LinuxCNC-style lookups on an open INI FILE* (the file is parsed once and cached).
-   iniFind returns the first value or NULL; the pointer stays valid until the file changes. */
-const char *iniFind(FILE *fp, const char *tag, const char *section);
-/* 0 on success, -1 when missing or invalid. */
-int iniFindInt(FILE *fp, const char *tag, const char *section, int *result);
-int iniFindDouble(FILE *fp, const char *tag, const char *section, double *result);
 
 #ifdef __cplusplus
 }

@@ -37,7 +37,7 @@ public:
     bool IsOpen() const { return open_; }
     // Path given to the last Open().
     const std::string &Path() const { return path_; }
-    // Text of the last open failure (e.g. "Cannot open ini-file (errno=2 (...))"), empty if none.
+    // "Cannot load ini-file '<path>'" after a failed Open() (the details went to stderr), else empty.
     const std::string &ErrorText() const { return error_; }
     // Silence (true) or enable (false) diagnostics of typed lookups on stderr.
     void SetQuiet(bool quiet) { quiet_ = quiet; }
@@ -86,8 +86,10 @@ public:
     static std::optional<double> MapLinearUnits(const std::string &text);
     static std::optional<double> MapAngularUnits(const std::string &text);
     static std::optional<int> MapJointType(const std::string &text);
-    // Turn a leading "~/" (or a lone "~") into $HOME.
+    // Turn a leading "~/" into $HOME/ (unchanged when HOME is not set).
     static std::string TildeExpand(const std::string &path);
+    // Like TildeExpand, but nullopt when the path starts with "~/" and HOME is not set.
+    static std::optional<std::string> TildeExpandStrict(const std::string &path);
 
 private:
     friend class IniParser;

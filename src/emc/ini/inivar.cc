@@ -19,9 +19,19 @@ using Options = std::map<std::string, std::string>;
     exit(1);
 }
 
+const char usage_text[] =
+    "Usage: inivar -var VARIABLE [-sec SECTION] [-num N] [-ini INIFILE] [-tildeexpand]\n"
+    "Prints the N-th (default first) value of VARIABLE in SECTION (default: any section) of\n"
+    "INIFILE (default emc.ini). -tildeexpand turns a leading ~/ into $HOME/.\n"
+    "Exit status: 0 found, 1 usage or file error, 2 not found. See also inivalue.\n";
+
 // Parse the single-dash options; every problem is fatal.
 Options parse_options(int argc, char **argv)
 {
+    if (argc == 2 && (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-help") || !strcmp(argv[1], "-h"))) {
+        fputs(usage_text, stdout);
+        exit(0);
+    }
     static const char *const with_arg[] = {"-var", "-sec", "-num", "-ini"};
     Options opts;
     for (int i = 1; i < argc; i++) {

@@ -93,6 +93,10 @@ int main(int argc, char **argv)
     char why[256];
     int key = EMCMOT_SHM_DEFAULT_KEY, opt, comp_id;
 
+    if (argc == 2 && (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0)) {
+        printf("%s\n", "Usage: motion-logger [-k SHMEM_KEY] [LOGFILE]");
+        return 0;
+    }
     while ((opt = getopt(argc, argv, "k:")) != -1) {
         if (opt != 'k') {
             fprintf(stderr, "usage: motion-logger [-k SHMEM_KEY] [LOGFILE]\n");

@@ -371,6 +371,10 @@ int main(int argc, char **argv)
     inject_t in = { NULL, 5.0, "-", 0, 0, 0, 0 };
     int key = EMCMOT_SHM_DEFAULT_KEY, opt;
 
+    if (argc == 2 && (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0)) {
+        printf("%s\n", "Usage: motion-inject [-n] [-k SHMEM_KEY] [-t TIMEOUT_S] [SCRIPT...]");
+        return 0;
+    }
     while ((opt = getopt(argc, argv, "nk:t:")) != -1) {
         if (opt == 'n')
             in.no_wait = 1;

@@ -36,6 +36,12 @@ void cubic_add_point(cubic_t *c, double pos)
     c->step = 0;
 }
 
+/* At rest: the interval is used up and every point is the same. */
+int cubic_settled(const cubic_t *c)
+{
+    return c->step >= c->rate && c->p[0] == c->p[3] && c->p[1] == c->p[3] && c->p[2] == c->p[3];
+}
+
 /* Evaluate the polynomial at the next sample of the interval. */
 double cubic_sample(cubic_t *c, double servo_period, double *vel, double *acc)
 {

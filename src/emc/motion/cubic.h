@@ -17,6 +17,8 @@ void cubic_init(cubic_t *c, int rate, double pos);
 int cubic_needs_point(const cubic_t *c);
 /* Add the next trajectory point. */
 void cubic_add_point(cubic_t *c, double pos);
+/* Non-zero when the last four points are equal and the interval is used up (at rest). */
+int cubic_settled(const cubic_t *c);
 /* Next servo sample (position), with velocity and acceleration per second. */
 double cubic_sample(cubic_t *c, double servo_period, double *vel, double *acc);
 

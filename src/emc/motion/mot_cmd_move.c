@@ -196,8 +196,13 @@ static int queue_move(const emcmot_command_t *c)
     EmcPose start;
     tp_result_t r;
 
-    if (mot->tp_ops->is_done(mot->tp))
+    if (mot->tp_ops->is_done(mot->tp)) {
         mot->tp_ops->get_pos(mot->tp, &mot->queued_end);
+        /* An idle planner restarts from where it stands (tpmod of this tree does not start
+         * a rigid tap queued behind finished moves otherwise). */
+        if (c->command == EMCMOT_RIGID_TAP)
+            mot->tp_ops->set_pos(mot->tp, &mot->queued_end);
+    }
     start = mot->queued_end;
     fill_segment(&seg, c, &start);
     r = mot->tp_ops->add(mot->tp, &seg);

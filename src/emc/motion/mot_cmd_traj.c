@@ -149,17 +149,19 @@ int mot_cmd_set_scurve_peak_scale(const emcmot_command_t *c)
     return EMCMOT_COMMAND_OK;
 }
 
-/* SET_TERM_COND: STOP 0, EXACT 1, BLEND 2 (TANGENT 3 accepted), for the moves that follow. */
+/* SET_TERM_COND: STOP 0 (G61.1), EXACT 1 (G61), BLEND 2 (G64), for the moves that follow. */
 int mot_cmd_set_term_cond(const emcmot_command_t *c)
 {
-    if (c->term_cond < TP_TERM_COND_STOP || c->term_cond > TP_TERM_COND_TANGENT)
+    if (c->term_cond < TP_TERM_COND_STOP || c->term_cond > TP_TERM_COND_BLEND)
         return mot_refuse(EMCMOT_COMMAND_INVALID_PARAMS, 1, "SET_TERM_COND: bad condition %d",
                           c->term_cond);
     if (need_nonnegative(c, c->tolerance))
         return EMCMOT_COMMAND_INVALID_PARAMS;
+    if (mot->tp_ops->set_term_cond(mot->tp, (tp_term_cond_t)c->term_cond, c->tolerance) != TP_OK)
+        return mot_refuse(EMCMOT_COMMAND_BAD_EXEC, 1, "planner refused term condition %d",
+                          c->term_cond);
     mot->term_cond = c->term_cond;
     mot->tolerance = c->tolerance;
-    mot->tp_ops->set_term_cond(mot->tp, (tp_term_cond_t)c->term_cond, c->tolerance);
     return EMCMOT_COMMAND_OK;
 }
 

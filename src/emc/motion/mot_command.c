@@ -148,6 +148,15 @@ int mot_cmd_is_move(int code)
         code == EMCMOT_RIGID_TAP;
 }
 
+/* Commands whose success changes configuration readers may cache (status.config_serial). */
+static int changes_config(int code)
+{
+    return (code >= EMCMOT_SET_VEL && code <= EMCMOT_SET_NUM_SPINDLES) ||
+        code == EMCMOT_SET_WORLD_HOME || code == EMCMOT_SET_MAX_FEED_OVERRIDE ||
+        code == EMCMOT_SETUP_ARC_BLENDS || code == EMCMOT_SET_PROBE_ERR_INHIBIT ||
+        (code >= EMCMOT_SET_JOINT_POSITION_LIMITS && code <= EMCMOT_SET_SPINDLE_PARAMS);
+}
+
 /* Record a rejection in the echo's history. */
 static void remember_rejection(const emcmot_command_t *cmd, int result)
 {
@@ -191,6 +200,8 @@ static void handle_one(const emcmot_command_t *cmd)
     mot->echo.handled++;
     if (result != EMCMOT_COMMAND_OK)
         remember_rejection(cmd, result);
+    else if (changes_config(cmd->command))
+        mot->status.config_serial++;
 }
 
 /* Non-zero when a move must wait in the ring because the planner queue is full. */

@@ -28,9 +28,12 @@ static void fill_cycle_in(void)
         in->at_speed = sp->at_speed;
         in->index_enable = *mot->pins->spindle[s].index_enable != 0;
     }
-    cycle_in.indexer_unlocked = 1;
-    if (mot->indexer_joint >= 0 && mot->pins->joint[mot->indexer_joint].is_unlocked)
-        cycle_in.indexer_unlocked = *mot->pins->joint[mot->indexer_joint].is_unlocked != 0;
+    /* Not unlocked until the planner has named the joint and its is-unlocked pin answered
+     * (a joint without the pin counts as unlocked once named). */
+    cycle_in.indexer_unlocked = 0;
+    if (mot->indexer_joint >= 0)
+        cycle_in.indexer_unlocked = !mot->pins->joint[mot->indexer_joint].is_unlocked ||
+            *mot->pins->joint[mot->indexer_joint].is_unlocked;
 }
 
 /* Synchronised digital/analog outputs that take effect this cycle. */
@@ -102,6 +105,8 @@ static int planner_cycle(double *joints)
     EmcPose pos;
 
     fill_cycle_in();
+    if (mot->paused)
+        mot->tp_ops->pause(mot->tp);    /* motion's pause holds even across a finishing abort */
     mot->tp_ops->run_cycle(mot->tp, &cycle_in, &cycle_out);
     take_report(&cycle_out);
     apply_synced_io(&cycle_out);
@@ -147,4 +152,15 @@ const mot_shadow_seg_t *mot_executing_segment(void)
     if (mot->shadow[mot->shadow_head].id != mot->exec_id)
         return NULL;
     return &mot->shadow[mot->shadow_head];
+}
+
+/* Coordinated motion at rest: the planner is done and the joints' interpolation caught up. */
+int mot_coord_settled(void)
+{
+    if (!mot->tp_ops->is_done(mot->tp))
+        return 0;
+    for (int j = 0; j < mot->num_kins_joints && mot->interp_rate > 1; j++)
+        if (!cubic_settled(&mot->joint[j].cubic))
+            return 0;
+    return 1;
 }

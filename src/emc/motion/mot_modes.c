@@ -3,6 +3,7 @@
 #include "mot_priv.h"
 #include "mot_control.h"
 #include "mot_jog.h"
+#include "mot_coord.h"
 
 /* Non-zero while a joint's free planner still moves. */
 int mot_any_joint_moving(void)
@@ -127,7 +128,7 @@ static void enter_free(void)
 static int at_rest(void)
 {
     if (mot->coord)
-        return mot->tp_ops->is_done(mot->tp);
+        return mot_coord_settled();
     if (mot->teleop)
         return !any_axis_moving();
     return !mot_any_joint_moving();

@@ -151,7 +151,7 @@ static void motion_pins(void)
     mot_pins_t *p = mot->pins;
 
     mot->inpos = mot->enabled ? !mot_any_joint_moving() && !mot->home->homing_active() &&
-        (!mot->coord || mot->tp_ops->is_done(mot->tp)) : 1;
+        (!mot->coord || mot_coord_settled()) : 1;
     for (int a = 0; a < MOT_NUM_AXES && mot->teleop; a++)
         if (mot->axis[a].teleop_tp.active)
             mot->inpos = 0;

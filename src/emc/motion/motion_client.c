@@ -109,6 +109,11 @@ int emcmot_attach(int base_key, int flags, emcmot_client_t **client, char *why, 
         snprintf(why, why_size, "out of memory");
         return -ENOMEM;
     }
+    if (rtapi_instance() < 0) {
+        snprintf(why, why_size, "OPENEMC_INSTANCE is not an instance number 0..255");
+        free(c);
+        return -EINVAL;
+    }
     c->key = sysv_key(base_key);
     c->shmid = shmget(c->key, 0, 0);
     if (c->shmid < 0) {

@@ -1,4 +1,6 @@
 /* motmod.c: the motion controller module: parameters, load order, threads, functions, shared memory. */
+#include <errno.h>
+#include <signal.h>
 #include <string.h>
 #include <unistd.h>
 #include "rtapi.h"
@@ -76,7 +78,20 @@ static int create_threads(void)
     return 0;
 }
 
-/* Create (or take over) the motion segment and initialise it as its owner. */
+/* Non-zero when another live process (e.g. motion-logger) owns the segment. */
+static int owned_elsewhere(const emcmot_shm_t *shm)
+{
+    const emcmot_shm_header_t *h = &shm->header;
+    int pid = h->owner_pid;
+
+    if (h->magic != EMCMOT_SHM_MAGIC || h->owner_state != EMCMOT_OWNER_RUNNING)
+        return 0;
+    if (pid <= 0 || pid == (int)getpid())
+        return 0;
+    return kill(pid, 0) == 0 || errno != ESRCH;
+}
+
+/* Create (or take over a retired) motion segment and initialise it as its owner. */
 static int open_shm(void)
 {
     void *mem;
@@ -90,6 +105,13 @@ static int open_shm(void)
     }
     mot->shm_id = id;
     rtapi_shmem_getptr(id, &mem);
+    if (owned_elsewhere(mem)) {
+        const emcmot_shm_header_t *h = mem;
+        rtapi_print_msg(RTAPI_MSG_ERR, "MOTION: motion shared memory (key %d) is in use by %s "
+                        "(pid %d)\n", config.shm_key, h->owner_name, (int)h->owner_pid);
+        rtapi_shmem_delete(id, mot->comp_id);
+        return -EBUSY;
+    }
     mot->shm = mem;
     emcmot_shm_init(mot->shm, "motmod", (int)getpid());
     return 0;

@@ -170,6 +170,12 @@ tooldata_t *tooldata_open(int create, char *err, size_t errlen)
         return NULL;
     }
     td->shmid = -1;
+    if (rtapi_instance() < 0) {
+        snprintf(err, errlen, "tool data: OPENEMC_INSTANCE is not an instance number 0..255");
+        free(td);
+        errno = EINVAL;
+        return NULL;
+    }
     rc = create ? td_create(td, key, err, errlen) : td_attach(td, key, err, errlen);
     if (rc < 0) {
         free(td);

@@ -1,4 +1,4 @@
-// arcs.cc: G2/G3 arcs and helices: center and radius formats with LinuxCNC's tolerances (gcode.md §11).
+// arcs.cc: G2/G3 arcs and helices: center and radius formats with LinuxCNC's tolerances (LinuxCNC's arc rules).
 #include <cmath>
 #include <cstdio>
 
@@ -43,13 +43,17 @@ void Interp::arc_center_r(const Block &b, double s1, double s2, double e1, doubl
     double tol = s_.units == CANON_UNITS_INCHES ? 0.00005 : 0.00127;
     if (s1 == e1 && s2 == e2) throw InterpError("Current point same as end point of arc");
     double m1 = (s1 + e1) / 2.0, m2 = (s2 + e2) / 2.0;
-    double half = std::hypot(e1 - m1, e2 - m2);
+    double half = std::hypot(m1 - e1, m2 - e2);
     double ar = std::fabs(r);
     if (half - ar > tol) throw InterpError("Arc radius too small to reach end point");
     if (half / ar > 1.0 - 1e-12) half = ar;
     bool right = (mode == 20 && r > 0) || (mode == 30 && r < 0);
-    double dir = std::atan2(e2 - s2, e1 - s1) + (right ? -M_PI_2 : M_PI_2);
-    double dist = std::sqrt(std::max(0.0, ar * ar - half * half));
+    // LinuxCNC's arithmetic to the last bit: the quarter turn added in long double, the center
+    // distance as R cos(asin(half / R)) (a semicircle's center is then off the chord by about
+    // 1e-17, which decides the sign of a center coordinate printed as zero)
+    long double quarter = right ? -M_PI_2l : M_PI_2l;
+    double dir = (double)(std::atan2(e2 - s2, e1 - s1) + quarter);
+    double dist = ar * std::cos(std::asin(half / ar));
     c1 = m1 + dist * std::cos(dir);
     c2 = m2 + dist * std::sin(dir);
 }
@@ -93,6 +97,17 @@ void Interp::arc_center_ijk(const Block &b, double s1, double s2, double e1, dou
     }
 }
 
+// Turns of an arc: the P word (a positive integer), default 1.
+int Interp::arc_turns(const Block &b) const
+{
+    if (!b.word('p')) return 1;
+    double p = b.value('p');
+    int turns = clamp_int(p);
+    if (turns < 1 || std::fabs(p - turns) > 0.0001)
+        throw InterpError("P word is not a positive integer");
+    return turns;
+}
+
 // G2 / G3.
 void Interp::move_arc(const Block &b, int mode)
 {
@@ -110,21 +125,14 @@ void Interp::move_arc(const Block &b, int mode)
     double c1, c2;
     if (b.word('r')) {
         static const char letters[] = "xyzabc";
-        if (!b.word(letters[pa.first]) && !b.word(letters[pa.second]) && !b.has_polar_radius &&
-            !b.has_polar_angle)
-            throw InterpError(pa.missing);
+        bool in_plane = b.word(letters[pa.first]) || b.word(letters[pa.second]) ||
+                        b.has_polar_radius || b.has_polar_angle;
+        if (!in_plane) throw InterpError(pa.missing);
         arc_center_r(b, s1, s2, e1, e2, mode, c1, c2);
     } else {
         arc_center_ijk(b, s1, s2, e1, e2, c1, c2);
     }
-    int turns = 1;
-    if (b.word('p')) {
-        double p = b.value('p');
-        turns = clamp_int(p);
-        if (turns < 1 || std::fabs(p - turns) > 0.0001)
-            throw InterpError("P word is not a positive integer");
-    }
-    int rotation = mode == 20 ? -turns : turns;
+    int rotation = mode == 20 ? -arc_turns(b) : arc_turns(b);
     if (s_.feed_mode == FEED_INVERSE_TIME)
         apply_inverse_time(arc_length(s1, s2, e1, e2, c1, c2, rotation,
                                       end[pa.normal] - s_.current[pa.normal]), b);

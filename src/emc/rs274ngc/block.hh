@@ -6,13 +6,13 @@
 #include <utility>
 #include <vector>
 
-// G modal groups (gcode.md §2); index into Block::g_modes.
+// G modal groups (LinuxCNC's modal groups); index into Block::g_modes.
 enum GGroup { GG_NONMODAL = 0, GG_MOTION = 1, GG_PLANE = 2, GG_DISTANCE = 3, GG_IJK = 4,
               GG_FEED = 5, GG_UNITS = 6, GG_COMP = 7, GG_TOOL_LENGTH = 8, GG_RETRACT = 10,
               GG_COORD = 12, GG_PATH = 13, GG_SPINDLE = 14, GG_LATHE = 15, GG_G92 = 16,
               GG_COUNT = 17 };
 
-// M modal groups (gcode.md §2); index into Block::m_modes.
+// M modal groups (LinuxCNC's modal groups); index into Block::m_modes.
 enum MGroup { MG_STOP = 4, MG_IO = 5, MG_TOOL = 6, MG_SPINDLE = 7, MG_COOLANT = 8,
               MG_OVERRIDE = 9, MG_USER = 10, MG_COUNT = 11 };
 
@@ -36,6 +36,7 @@ struct Block {
     bool g80_dropped = false;   // explicit G80 silently dropped next to another motion code
     std::string comment;        // last (...) comment text, case kept
     bool has_comment = false;
+    std::string py_code;        // ";py,..." / ";pyrun,..." / ";pyreload" text after the ';' (embedded Python)
     std::vector<std::pair<int, double>> num_assign;          // #n=value
     std::vector<std::pair<std::string, double>> named_assign; // #<name>=value
     OKind o_kind = O_NONE;
@@ -46,8 +47,8 @@ struct Block {
     bool o_fanuc = false;       // "O100" without keyword: Fanuc program/sub number
     bool m98 = false;           // M98 Fanuc-style call
     bool block_delete = false;  // line starts with '/'
-    int remap_g = -1;           // remapped G code ×10 on this line (REMAP=)
-    int remap_m = -1;           // remapped M code on this line
+    bool execute_finish = false; // a step asked for execute-finish (probe, tool change)
+    int status = 0;             // InterpStatus a step ended the block with (0 = OK)
 
     Block() { for (int &g : g_modes) g = -1; for (int &m : m_modes) m = -1; }
     // true when letter word c ('a'..'z') is present

@@ -1,4 +1,4 @@
-// canon.hh: the canonical machining interface (canon.md §2) the interpreter calls; task, rs274 and previews implement it.
+// canon.hh: the canonical machining interface (LinuxCNC's canonical machining functions) the interpreter calls; task, rs274 and previews implement it.
 #ifndef OPENEMC_RS274NGC_CANON_HH
 #define OPENEMC_RS274NGC_CANON_HH
 
@@ -34,7 +34,7 @@ struct CanonNurbsPoint {
     double x = 0, y = 0, weight = 1;
 };
 
-// Abstract consumer of canonical calls; every method maps 1:1 to a canon.md call.
+// Abstract consumer of canonical calls; every method maps 1:1 to a LinuxCNC canon call.
 class Canon {
 public:
     virtual ~Canon() = default;
@@ -117,6 +117,8 @@ public:
 
     // text and program control
     virtual void comment(const std::string &text) = 0;
+    // CANON_ERROR (from embedded Python): an operator error message; ignored by consumers without one
+    virtual void canon_error(const std::string &) {}
     virtual void message(const std::string &text) = 0;
     virtual void log(const std::string &text) = 0;
     virtual void logopen(const std::string &name) = 0;

@@ -70,8 +70,12 @@ std::string Interp::expand_param(const std::string &text, size_t &i, int decimal
         for (size_t k = i + 2; k < end; k++)
             if (text[k] != ' ' && text[k] != '\t') name += (char)tolower((unsigned char)text[k]);
         i = end;
-        if (name.empty() || !named_exists(name)) return "######";
-        return format_value(get_named(name), decimals);
+        try {
+            if (name.empty() || !named_exists(name)) return "######";
+            return format_value(get_named(name), decimals);
+        } catch (const InterpError &) {   // a namedparams function that failed: shown, not fatal
+            return "######";
+        }
     }
     size_t k = i + 1;
     while (k < text.size() && isdigit((unsigned char)text[k])) k++;
@@ -88,6 +92,7 @@ void Interp::do_comment(Block &b)
     INTERP_FRAME();
     const std::string &c = b.comment;
     std::string rest;
+    if (python_comment(c)) return;
     if (keyword(c, "msg", rest)) { out().message(rest); return; }
     if (keyword(c, "debug", rest)) {
         if (s_.params[5599] > 0) out().message(expand_text(rest));

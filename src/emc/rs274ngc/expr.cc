@@ -1,4 +1,4 @@
-// expr.cc: real values of a normalized line: numbers, parameters, [expressions] and functions (gcode.md §7).
+// expr.cc: real values of a normalized line: numbers, parameters, [expressions] and functions (LinuxCNC's expression rules).
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
@@ -11,47 +11,98 @@ namespace {
 constexpr double DEG = M_PI / 180.0;
 constexpr double EQ_TOL = 1e-6;
 
-// precedence of a binary operator (gcode.md §7 levels); OP_END is 0
-int precedence(BinOp op)
+// a value must stay finite
+double checked(double v)
 {
-    switch (op) {
-    case OP_POW: return 5;
-    case OP_MUL: case OP_DIV: case OP_MOD: return 4;
-    case OP_ADD: case OP_SUB: return 3;
-    case OP_EQ: case OP_NE: case OP_GT: case OP_GE: case OP_LT: case OP_LE: return 2;
-    case OP_AND: case OP_OR: case OP_XOR: return 1;
-    default: return 0;
-    }
+    if (!std::isfinite(v)) throw InterpError("Calculation resulted in an invalid number");
+    return v;
 }
+
+// the one-argument functions, by name; arguments and results in degrees
+double fn_abs(double v) { return std::fabs(v); }
+double fn_acos(double v)
+{
+    if (v < -1.0 || v > 1.0) throw InterpError("Argument to acos out of range");
+    return std::acos(v) / DEG;
+}
+double fn_asin(double v)
+{
+    if (v < -1.0 || v > 1.0) throw InterpError("Argument to asin out of range");
+    return std::asin(v) / DEG;
+}
+double fn_cos(double v) { return std::cos(v * DEG); }
+double fn_exp(double v) { return std::exp(v); }
+double fn_fix(double v) { return std::floor(v); }
+double fn_fup(double v) { return std::ceil(v); }
+double fn_ln(double v)
+{
+    if (v <= 0.0) throw InterpError("Zero or negative argument to ln");
+    return std::log(v);
+}
+double fn_round(double v) { return std::round(v); }
+double fn_sin(double v) { return std::sin(v * DEG); }
+double fn_sqrt(double v)
+{
+    if (v < 0.0) throw InterpError("Negative argument to sqrt");
+    return std::sqrt(v);
+}
+double fn_tan(double v) { return std::tan(v * DEG); }
+
+const struct { const char *name; double (*fn)(double); } UNARY[] = {
+    {"abs", fn_abs}, {"acos", fn_acos}, {"asin", fn_asin}, {"cos", fn_cos}, {"exp", fn_exp},
+    {"fix", fn_fix}, {"fup", fn_fup},   {"ln", fn_ln},     {"round", fn_round},
+    {"sin", fn_sin}, {"sqrt", fn_sqrt}, {"tan", fn_tan},
+};
 
 // apply a one-argument function by name
 double apply_unary(const std::string &name, double v)
 {
-    if (name == "abs") return std::fabs(v);
-    if (name == "acos") {
-        if (v < -1.0 || v > 1.0) throw InterpError("Argument to acos out of range");
-        return std::acos(v) / DEG;
-    }
-    if (name == "asin") {
-        if (v < -1.0 || v > 1.0) throw InterpError("Argument to asin out of range");
-        return std::asin(v) / DEG;
-    }
-    if (name == "cos") return std::cos(v * DEG);
-    if (name == "exp") return std::exp(v);
-    if (name == "fix") return std::floor(v);
-    if (name == "fup") return std::ceil(v);
-    if (name == "ln") {
-        if (v <= 0.0) throw InterpError("Zero or negative argument to ln");
-        return std::log(v);
-    }
-    if (name == "round") return std::round(v);
-    if (name == "sin") return std::sin(v * DEG);
-    if (name == "sqrt") {
-        if (v < 0.0) throw InterpError("Negative argument to sqrt");
-        return std::sqrt(v);
-    }
-    if (name == "tan") return std::tan(v * DEG);
+    for (const auto &u : UNARY)
+        if (name == u.name) return u.fn(v);
     throw InterpError("Unknown word starting with " + name.substr(0, 1));
+}
+
+// the binary operators (LinuxCNC's expression rules): precedence level and evaluation, indexed by BinOp
+double op_pow(double a, double b)
+{
+    if (a < 0.0 && std::floor(b) != b)
+        throw InterpError("Attempt to raise negative to non integer power");
+    return checked(std::pow(a, b));
+}
+double op_mul(double a, double b) { return checked(a * b); }
+double op_div(double a, double b)
+{
+    if (b == 0.0) throw InterpError("Attempt to divide by zero");
+    return checked(a / b);
+}
+double op_mod(double a, double b)
+{
+    if (b == 0.0) throw InterpError("Attempt to divide by zero");
+    double r = std::fmod(a, b);
+    return r < 0.0 ? r + std::fabs(b) : r;
+}
+double op_add(double a, double b) { return checked(a + b); }
+double op_sub(double a, double b) { return checked(a - b); }
+double op_eq(double a, double b) { return std::fabs(a - b) < EQ_TOL ? 1 : 0; }
+double op_ne(double a, double b) { return std::fabs(a - b) >= EQ_TOL ? 1 : 0; }
+double op_gt(double a, double b) { return a > b ? 1 : 0; }
+double op_ge(double a, double b) { return (a > b || std::fabs(a - b) < EQ_TOL) ? 1 : 0; }
+double op_lt(double a, double b) { return a < b ? 1 : 0; }
+double op_le(double a, double b) { return (a < b || std::fabs(a - b) < EQ_TOL) ? 1 : 0; }
+double op_and(double a, double b) { return (a != 0.0 && b != 0.0) ? 1 : 0; }
+double op_or(double a, double b) { return (a != 0.0 || b != 0.0) ? 1 : 0; }
+double op_xor(double a, double b) { return ((a != 0.0) != (b != 0.0)) ? 1 : 0; }
+
+const struct { int level; double (*fn)(double, double); } BINARY[] = {
+    {0, nullptr}, {5, op_pow}, {4, op_mul}, {4, op_div}, {4, op_mod}, {3, op_add}, {3, op_sub},
+    {2, op_eq},   {2, op_ne},  {2, op_gt},  {2, op_ge},  {2, op_lt},  {2, op_le},  {1, op_and},
+    {1, op_or},   {1, op_xor},
+};
+
+// precedence of a binary operator (LinuxCNC's levels); OP_END is 0
+int precedence(BinOp op)
+{
+    return BINARY[op].level;
 }
 
 // true when name is a one-argument function
@@ -62,13 +113,6 @@ bool is_unary(const std::string &name)
     for (const char *n : names)
         if (name == n) return true;
     return false;
-}
-
-// a value must stay finite
-double checked(double v)
-{
-    if (!std::isfinite(v)) throw InterpError("Calculation resulted in an invalid number");
-    return v;
 }
 
 } // namespace
@@ -154,17 +198,7 @@ double Interp::read_unary(const std::string &t, size_t &pos)
         throw InterpError(std::string("Unknown word starting with ") + t[start]);
     if (pos >= t.size() || t[pos] != '[')
         throw InterpError("Left bracket missing after unary operation name");
-    if (name == "exists") {
-        pos++;
-        if (t.compare(pos, 2, "#<") != 0)
-            throw InterpError("EXISTS argument must be a named parameter");
-        pos++;
-        std::string pname = read_name(t, pos);
-        if (pos >= t.size() || t[pos] != ']')
-            throw InterpError("Expected ']' after EXISTS parameter");
-        pos++;
-        return named_exists(pname) ? 1.0 : 0.0;
-    }
+    if (name == "exists") return read_exists(t, pos);
     double v = eval_expression(t, pos);
     if (name == "atan") {
         if (pos >= t.size() || t[pos] != '/')
@@ -176,6 +210,28 @@ double Interp::read_unary(const std::string &t, size_t &pos)
         return std::atan2(v, x) / DEG;
     }
     return checked(apply_unary(name, v));
+}
+
+// EXISTS[#<name>], EXISTS[#n] or EXISTS[##n] (pos on '['): 1 when the named parameter is
+// defined or the number is a parameter number, else 0.
+double Interp::read_exists(const std::string &t, size_t &pos)
+{
+    INTERP_FRAME();
+    pos++;
+    if (pos >= t.size() || t[pos] != '#')
+        throw InterpError("EXISTS argument must be a parameter: #<name>, #n or ##n");
+    pos++;
+    double found;
+    if (pos < t.size() && t[pos] == '<') {
+        found = named_exists(read_name(t, pos)) ? 1.0 : 0.0;
+    } else {
+        double n = read_real_value(t, pos);
+        found = (n == std::nearbyint(n) && n >= 1 && n < PARAM_COUNT) ? 1.0 : 0.0;
+    }
+    if (pos >= t.size() || t[pos] != ']')
+        throw InterpError("Right bracket missing after EXISTS parameter");
+    pos++;
+    return found;
 }
 
 // Read a binary operator at pos (symbols or lower-case words); ']' gives OP_END.
@@ -213,32 +269,7 @@ BinOp Interp::read_operator(const std::string &t, size_t &pos)
 double Interp::eval_binary(double a, BinOp op, double b)
 {
     INTERP_FRAME();
-    switch (op) {
-    case OP_POW:
-        if (a < 0.0 && std::floor(b) != b)
-            throw InterpError("Attempt to raise negative to non integer power");
-        return checked(std::pow(a, b));
-    case OP_MUL: return checked(a * b);
-    case OP_DIV:
-        if (b == 0.0) throw InterpError("Attempt to divide by zero");
-        return checked(a / b);
-    case OP_MOD: {
-        if (b == 0.0) throw InterpError("Attempt to divide by zero");
-        double r = std::fmod(a, b);
-        return r < 0.0 ? r + std::fabs(b) : r;
-    }
-    case OP_ADD: return checked(a + b);
-    case OP_SUB: return checked(a - b);
-    case OP_EQ: return std::fabs(a - b) < EQ_TOL ? 1 : 0;
-    case OP_NE: return std::fabs(a - b) >= EQ_TOL ? 1 : 0;
-    case OP_GT: return a > b ? 1 : 0;
-    case OP_GE: return (a > b || std::fabs(a - b) < EQ_TOL) ? 1 : 0;
-    case OP_LT: return a < b ? 1 : 0;
-    case OP_LE: return (a < b || std::fabs(a - b) < EQ_TOL) ? 1 : 0;
-    case OP_AND: return (a != 0.0 && b != 0.0) ? 1 : 0;
-    case OP_OR: return (a != 0.0 || b != 0.0) ? 1 : 0;
-    default: return ((a != 0.0) != (b != 0.0)) ? 1 : 0;
-    }
+    return BINARY[op].fn(a, b);
 }
 
 // Evaluate "[ ... ]" starting at the '[' with left-associative precedence levels.

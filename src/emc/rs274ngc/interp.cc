@@ -71,10 +71,11 @@ void Interp::init()
     s_.origin_index = index;
     s_.params[5220] = index;
     double k = s_.machine_to_program();
+    bool apply = s_.params[5210] != 0.0 && !s_.settings.disable_g92_persistence;
     for (int i = 0; i < AX_COUNT; i++) {
-        s_.origin_offset[i] = s_.params[5201 + 20 * index + i] * k;
-        bool apply = s_.params[5210] == 1.0 && !s_.settings.disable_g92_persistence;
-        s_.axis_offset[i] = apply ? s_.params[5211 + i] * k : 0.0;
+        double scale = (i >= AX_A && i <= AX_C) ? 1.0 : k;
+        s_.origin_offset[i] = s_.params[5201 + 20 * index + i] * scale;
+        s_.axis_offset[i] = apply ? s_.params[5211 + i] * scale : 0.0;
     }
     s_.rotation_xy = s_.params[5210 + 20 * index];
     emit_g5x();
@@ -84,6 +85,7 @@ void Interp::init()
     CanonPose p = c.get_external_position();
     s_.current = Pose{p.x, p.y, p.z, p.a, p.b, p.c, p.u, p.v, p.w};
     write_var_file();
+    start_python();
 }
 
 // Load a file into memory (nullptr when unreadable).
@@ -117,12 +119,19 @@ std::shared_ptr<SourceFile> Interp::make_source(const std::string &path, const s
         f->lines.emplace_back(text, start, end - start);
         start = nl + 1;
     }
-    for (const std::string &l : f->lines) {
-        if (l.find_first_not_of(" \t") == std::string::npos) continue;
-        f->percent = is_percent(l);
+    for (size_t i = 0; i < f->lines.size(); i++) {
+        if (f->lines[i].find_first_not_of(" \t") == std::string::npos) continue;
+        f->percent = is_percent(f->lines[i]);
+        f->percent_line = i;
         break;
     }
     return f;
+}
+
+// True when line i is the '%' that ends a percent-delimited program.
+bool SourceFile::closes(size_t i) const
+{
+    return percent && i != percent_line && i < lines.size() && is_percent(lines[i]);
 }
 
 // Open the main program.
@@ -146,6 +155,7 @@ void Interp::open_source(const std::shared_ptr<SourceFile> &f)
 {
     INTERP_FRAME();
     const std::string &path = f->path;
+    remap_stack_.clear();
     calls_.resize(1);
     calls_[0] = CallFrame();
     calls_[0].file = f;
@@ -174,6 +184,10 @@ void Interp::exit()
 {
     INTERP_FRAME();
     write_var_file();
+    if (py_) {
+        PyOutcome o = py_->call_delete();
+        if (o.kind == PyOutcome::ERROR) fprintf(stderr, "%s\n", o.error.c_str());
+    }
     s_.line_text.clear();
     real_out_.on_reset();
 }
@@ -182,6 +196,13 @@ void Interp::exit()
 InterpStatus Interp::execute_next()
 {
     INTERP_FRAME();
+    if (remap_suspended()) {
+        try {
+            return resume_remap();
+        } catch (const InterpError &e) {
+            return fail(e, s_.line_text);
+        }
+    }
     CallFrame &f = calls_.back();
     if (!f.file || f.pos >= f.file->lines.size()) {
         s_.line_text.clear();
@@ -194,12 +215,12 @@ InterpStatus Interp::execute_next()
     }
     s_.sequence_number = (int)f.pos + 1;
     const std::string &line = f.file->lines[f.pos++];
-    if (is_percent(line) && f.file->percent && !skipping_) {
-        bool first = true;
-        for (size_t i = 0; i + 1 < f.pos; i++)
-            if (f.file->lines[i].find_first_not_of(" \t") != std::string::npos) first = false;
+    if (f.file->percent && f.pos - 1 == f.file->percent_line) {
         s_.line_text = line;
-        if (first) return INTERP_OK;
+        return INTERP_OK;
+    }
+    if (f.file->closes(f.pos - 1) && !skipping_) {
+        s_.line_text = line;
         out().finish();
         return INTERP_EXIT;
     }
@@ -210,6 +231,18 @@ InterpStatus Interp::execute_next()
 InterpStatus Interp::execute_line(const std::string &text)
 {
     INTERP_FRAME();
+    if (remap_suspended()) {
+        if (text.find_first_not_of(" \t\r\n") != std::string::npos) {
+            error_ = "Cannot execute '" + text + "': a remapped code waits to be resumed";
+            error_line_ = text;
+            return INTERP_ERROR;
+        }
+        try {
+            return resume_remap();
+        } catch (const InterpError &e) {
+            return fail(e, s_.line_text);
+        }
+    }
     if (calls_.size() <= 1 && (calls_.empty() || calls_[0].flow.empty())) total_iterations_ = 0;
     return run_line(rstrip(text));
 }
@@ -221,37 +254,46 @@ InterpStatus Interp::run_line(const std::string &raw)
     s_.line_text = raw;
     eof_error_ = false;
     error_stack_.clear();
-    interp_error_unwinding = false;
     try {
-        if (line_budget_ >= 0 && line_budget_-- == 0) throw InterpError("Line budget exhausted");
-        if (skipping_ && skip_fanuc_) {
-            fanuc_skip_done(raw);
-            return INTERP_OK;
-        }
-        if (skipping_) {
-            std::string name;
-            OKind kind;
-            if (!peek_oword(raw, name, kind) || !skip_match(name, kind)) return INTERP_OK;
-        }
-        s_.params[5600] = real_out_.get_external_toolchanger_fault();
-        s_.params[5601] = real_out_.get_external_toolchanger_reason();
-        Block b;
-        parse_line(raw, b);
-        if (b.block_delete && block_delete_) return INTERP_OK;
-        return execute_block(b);
+        return run_line_body(raw);
     } catch (const InterpError &e) {
-        interp_error_unwinding = false;
-        error_ = e.what();
-        error_line_ = raw;
-        unwind_after_error();
-        return INTERP_ERROR;
+        return fail(e, raw);
     }
+}
+
+// Skip, parse and execute one line; errors propagate.
+InterpStatus Interp::run_line_body(const std::string &raw)
+{
+    INTERP_FRAME();
+    if (line_budget_ >= 0 && line_budget_-- == 0) throw InterpError("Line budget exhausted");
+    if (skipping_) {
+        std::string name;
+        OKind kind;
+        if (!peek_oword(raw, name, kind) || !skip_match(name, kind)) return INTERP_OK;
+    }
+    s_.params[5600] = real_out_.get_external_toolchanger_fault();
+    s_.params[5601] = real_out_.get_external_toolchanger_reason();
+    Block b;
+    parse_line(raw, b);
+    if (b.block_delete && block_delete_) return INTERP_OK;
+    return execute_block(b);
+}
+
+// Record an error (an InterpErrorAt names its own line, e.g. the call line a remap generates) and unwind.
+InterpStatus Interp::fail(const InterpError &e, const std::string &raw)
+{
+    error_ = e.what();
+    auto at = dynamic_cast<const InterpErrorAt *>(&e);
+    error_line_ = at ? at->line() : raw;
+    unwind_after_error();
+    return INTERP_ERROR;
 }
 
 // After an error: drop subroutine levels, skips and held comp moves.
 void Interp::unwind_after_error()
 {
     INTERP_FRAME();
+    remap_stack_.clear();
     while (calls_.size() > 1) pop_call();
     skipping_ = false;
     nurbs_open_ = false;
@@ -303,11 +345,16 @@ bool Interp::load_ini(const std::string &path)
     st.oword_warnonly = flag("OWORD_WARNONLY", "RS274NGC", false);
     st.disable_fanuc_style_sub = flag("DISABLE_FANUC_STYLE_SUB", "RS274NGC", false);
     st.ini_vars = flag("INI_VARS", "RS274NGC", true);
+    st.loop_limit = (long)real("MAX_LOOP_ITERATIONS", "RS274NGC", (double)st.loop_limit);
+    st.total_loop_limit =
+        (long)real("MAX_TOTAL_LOOP_ITERATIONS", "RS274NGC", (double)st.total_loop_limit);
     st.hal_pin_vars = flag("HAL_PIN_VARS", "RS274NGC", true);
     st.tool_change_quill_up = flag("TOOL_CHANGE_QUILL_UP", "EMCIO", false);
     st.tool_change_at_g30 = flag("TOOL_CHANGE_AT_G30", "EMCIO", false);
     st.tool_change_with_spindle_on = flag("TOOL_CHANGE_WITH_SPINDLE_ON", "EMCIO", false);
     st.random_toolchanger = flag("RANDOM_TOOLCHANGER", "EMCIO", false);
+    auto spindles = ini.FindInt("SPINDLES", "TRAJ");
+    if (spindles && *spindles >= 1 && *spindles <= SPINDLE_COUNT) s_.num_spindles = *spindles;
     auto units = ini.Find("LINEAR_UNITS", "TRAJ");
     st.metric_machine = !units ? -1 : *units == "inch" ? 0 : 1;
     if (auto v = ini.Find("PROGRAM_PREFIX", "DISPLAY")) st.program_prefix = IniFile::TildeExpand(*v);
@@ -315,6 +362,7 @@ bool Interp::load_ini(const std::string &path)
     if (auto v = ini.Find("SUBROUTINE_PATH", "RS274NGC")) st.subroutine_path = split_path(*v);
     if (auto v = ini.Find("USER_M_PATH", "RS274NGC")) st.user_m_path = split_path(*v);
     if (auto v = ini.Find("PARAMETER_FILE", "RS274NGC")) var_file_ = *v;
-    load_remaps(ini.FindAll("REMAP", "RS274NGC"));
+    load_remaps(ini);
+    load_python_config(ini);
     return true;
 }

@@ -31,6 +31,8 @@ public:
     virtual void set_task(bool task) = 0;
     // block delete switch
     virtual void set_block_delete(bool on) = 0;
+    // M99 in the main program goes back to its first line (task) instead of ending it (rs274)
+    virtual void set_loop_on_main_m99(bool) {}
     // source of #<_hal[...]> values (none in rs274: they are not defined)
     virtual void set_hal_reader(HalReader) {}
     // runner of M100-M199 (none in rs274: "Unknown m code used")

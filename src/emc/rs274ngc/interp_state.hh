@@ -3,6 +3,7 @@
 #define OPENEMC_RS274NGC_INTERP_STATE_HH
 
 #include <array>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -16,16 +17,22 @@ enum AxisIndex { AX_X = 0, AX_Y, AX_Z, AX_A, AX_B, AX_C, AX_U, AX_V, AX_W, AX_CO
 // Nine axis values X Y Z A B C U V W.
 using Pose = std::array<double, AX_COUNT>;
 
-// True from the creation of an InterpError until the interpreter catches it (rs274 -s stack).
-inline bool interp_error_unwinding = false;
-
-// An interpreter error; what() is the exact user-visible text (gcode.md).
+// An interpreter error; what() is the exact user-visible text (LinuxCNC's texts).
 class InterpError : public std::runtime_error {
 public:
-    explicit InterpError(const std::string &msg) : std::runtime_error(msg)
-    {
-        interp_error_unwinding = true;
-    }
+    explicit InterpError(const std::string &msg) : std::runtime_error(msg) {}
+};
+
+// An error detected on another line than the one being executed (a forward search):
+// the report names that line.
+class InterpErrorAt : public InterpError {
+public:
+    InterpErrorAt(const std::string &msg, const std::string &line) : InterpError(msg), line_(line) {}
+    // the source line the error is about
+    const std::string &line() const { return line_; }
+
+private:
+    std::string line_;
 };
 
 // Round a user-supplied value to an int, clamped to +-1e9 (NaN -> 0), so casts never overflow.
@@ -35,6 +42,16 @@ inline int clamp_int(double v)
     if (v > 1e9) return 1000000000;
     if (v < -1e9) return -1000000000;
     return (int)(v < 0 ? v - 0.5 : v + 0.5);
+}
+
+// Rotate (x, y) counterclockwise by deg degrees about the origin (no change for 0).
+inline void rotate_xy(double &x, double &y, double deg)
+{
+    if (deg == 0.0) return;
+    double t = deg * (M_PI / 180.0), c = std::cos(t), s = std::sin(t);
+    double rx = x * c - y * s, ry = x * s + y * c;
+    x = rx;
+    y = ry;
 }
 
 // The canon form of a nine-axis pose (X Y Z A B C U V W), used by every emitter of moves.
@@ -55,13 +72,13 @@ enum RetractMode { RETRACT_OLD_Z = 0, RETRACT_R_PLANE = 1 };
 
 // Number of numbered parameters (#0 unused .. #5601).
 constexpr int PARAM_COUNT = 5602;
-// Number of spindles the interpreter tracks.
-constexpr int SPINDLE_COUNT = 1;
+// Most spindles a machine may have ([TRAJ]SPINDLES); the state arrays have this size.
+constexpr int SPINDLE_COUNT = 8;
 // Parameter numbers the cycles and comp code read.
 constexpr int PARAM_G28_HOME = 5161;
 constexpr int PARAM_G30_HOME = 5181;
 
-// Settings read once from the INI file (ini.md [RS274NGC]) or defaulted.
+// Settings read once from the INI file ([RS274NGC] and friends) or defaulted.
 struct InterpSettings {
     double g73_peck_clearance = -1;   // <0: default by initial units
     double g83_peck_clearance = -1;
@@ -80,6 +97,8 @@ struct InterpSettings {
     bool random_toolchanger = false;
     bool lazy_close = false;
     int metric_machine = -1;          // _metric_machine
+    long loop_limit = 100000000;      // passes of one loop before it counts as runaway (0: none)
+    long total_loop_limit = 1000000000; // passes of all loops of one program (0: none)
     std::string program_prefix;
     std::vector<std::string> subroutine_path;
     std::vector<std::string> user_m_path;     // [RS274NGC]USER_M_PATH dirs (M100-M199)
@@ -125,7 +144,10 @@ struct InterpState {
     FeedMode feed_mode = FEED_UNITS_PER_MINUTE;
     double feed_rate = 0;
     double speed[SPINDLE_COUNT] = {};
-    CanonDirection spindle_dir[SPINDLE_COUNT] = {CANON_STOPPED};
+    CanonDirection spindle_dir[SPINDLE_COUNT] = {CANON_STOPPED, CANON_STOPPED, CANON_STOPPED,
+                                                 CANON_STOPPED, CANON_STOPPED, CANON_STOPPED,
+                                                 CANON_STOPPED, CANON_STOPPED};
+    int num_spindles = 1;                 // [TRAJ]SPINDLES
     bool css_mode[SPINDLE_COUNT] = {};    // G96
     double css_max[SPINDLE_COUNT] = {};
     bool mist = false, flood = false;
@@ -175,6 +197,13 @@ struct InterpState {
     InterpSettings settings;
     SavedModal saved;                     // M70 slot
 
+    // spindle selected by a block's $ word (0 without one); error when not configured
+    int spindle_of(const Block &b) const
+    {
+        int sp = b.has_dollar ? clamp_int(b.dollar) : 0;
+        if (sp < 0 || sp >= num_spindles) throw InterpError("Invalid spindle ($) number");
+        return sp;
+    }
     // value of numbered parameter n
     double param(int n) const { return params[n]; }
     // set numbered parameter n

@@ -32,21 +32,29 @@ void Interp::do_io(Block &b)
         out().set_aux_output_value(n, b.value('q'));
 }
 
-// M66: wait for / read an input into #5399.
-void Interp::do_wait_input(Block &b)
+// The words of an M66: digital (P) or analog (E) input, wait type L, timeout Q.
+void Interp::check_wait_input(const Block &b, int &type, double &timeout) const
 {
-    INTERP_FRAME();
     if (b.word('p') && b.word('e'))
         throw InterpError("Invalid to select both a digital and an analog input with M66");
     if (!b.word('p') && !b.word('e'))
         throw InterpError("Must select either a digital or an analog input with M66");
-    int type = b.word('l') ? clamp_int(b.value('l')) : 0;
+    type = b.word('l') ? clamp_int(b.value('l')) : 0;
     if (type < 0 || type > 4) throw InterpError("Unknown wait type for M66");
-    double timeout = b.word('q') ? b.value('q') : 0.0;
+    timeout = b.word('q') ? b.value('q') : 0.0;
     if (type != 0 && timeout == 0.0)
         throw InterpError("Zero timeout with wait type != immediate return");
     if (b.word('e') && type != 0)
         throw InterpError("Analog input can only be used with immediate return (L0)");
+}
+
+// M66: wait for / read an input into #5399.
+void Interp::do_wait_input(Block &b)
+{
+    INTERP_FRAME();
+    int type;
+    double timeout;
+    check_wait_input(b, type, timeout);
     bool digital = b.word('p');
     int index = clamp_int(digital ? b.value('p') : b.value('e'));
     int ret = out().wait_input(index, digital ? 1 : 0, type, timeout);
@@ -58,31 +66,29 @@ void Interp::do_wait_input(Block &b)
                               : real_out_.get_external_analog_input(index, s_.params[5399]);
 }
 
-// M3/M4/M5/M19 and M70-M73 (step 11).
-void Interp::do_spindle(Block &b)
+// M3/M4/M5 on spindle s.
+void Interp::spindle_direction(int m, int s)
 {
-    INTERP_FRAME();
-    int m = b.m_modes[MG_SPINDLE];
-    if (m == -1) return;
-    int sp = b.has_dollar ? clamp_int(b.dollar) : 0;
-    if (sp < -1 || sp >= SPINDLE_COUNT) throw InterpError("Invalid spindle ($) number");
-    int first = sp == -1 ? 0 : sp, last = sp == -1 ? SPINDLE_COUNT - 1 : sp;
-    for (int s = first; s <= last; s++) {
-        if (m == 3) { out().start_spindle_clockwise(s); s_.spindle_dir[s] = CANON_CLOCKWISE; }
-        if (m == 4) {
-            out().start_spindle_counterclockwise(s);
-            s_.spindle_dir[s] = CANON_COUNTERCLOCKWISE;
-        }
-        if (m == 5) { out().stop_spindle_turning(s); s_.spindle_dir[s] = CANON_STOPPED; }
-    }
-    if (m == 19) {
-        double angle = (b.word('r') ? b.value('r') : 0.0) + s_.settings.orient_offset;
-        int mode = b.word('p') ? clamp_int(b.value('p')) : 0;
-        if (mode < 0 || mode > 2) throw InterpError("M19 P must be 0, 1 or 2");
-        if (b.word('r') || b.word('p')) out().orient_spindle(first, angle, mode);
-        s_.spindle_dir[first] = CANON_STOPPED;
-        if (b.word('q')) out().wait_spindle_orient_complete(first, b.value('q'));
-    }
+    if (m == 3) out().start_spindle_clockwise(s);
+    if (m == 4) out().start_spindle_counterclockwise(s);
+    if (m == 5) out().stop_spindle_turning(s);
+    s_.spindle_dir[s] = m == 3 ? CANON_CLOCKWISE : m == 4 ? CANON_COUNTERCLOCKWISE : CANON_STOPPED;
+}
+
+// M19 R angle P mode [Q timeout] on spindle sp.
+void Interp::orient_spindle(const Block &b, int sp)
+{
+    double angle = (b.word('r') ? b.value('r') : 0.0) + s_.settings.orient_offset;
+    int mode = b.word('p') ? clamp_int(b.value('p')) : 0;
+    if (mode < 0 || mode > 2) throw InterpError("M19 P must be 0, 1 or 2");
+    if (b.word('r') || b.word('p')) out().orient_spindle(sp, angle, mode);
+    s_.spindle_dir[sp] = CANON_STOPPED;
+    if (b.word('q')) out().wait_spindle_orient_complete(sp, b.value('q'));
+}
+
+// M70/M71/M72/M73: save, invalidate, restore the modal state.
+void Interp::modal_state_code(int m)
+{
     if (m == 70 || m == 73) modal_save(m == 73);
     if (m == 71) {
         calls_.back().saved.valid = false;
@@ -94,6 +100,21 @@ void Interp::do_spindle(Block &b)
         SavedModal saved = calls_.back().saved;
         modal_restore(saved);
     }
+}
+
+// M3/M4/M5/M19 and M70-M73 (step 11).
+void Interp::do_spindle(Block &b)
+{
+    INTERP_FRAME();
+    int m = b.m_modes[MG_SPINDLE];
+    if (m == -1) return;
+    int sp = b.has_dollar ? clamp_int(b.dollar) : 0;
+    if (sp < -1 || sp >= s_.num_spindles) throw InterpError("Invalid spindle ($) number");
+    int first = sp == -1 ? 0 : sp, last = sp == -1 ? s_.num_spindles - 1 : sp;
+    if (m >= 3 && m <= 5)
+        for (int s = first; s <= last; s++) spindle_direction(m, s);
+    if (m == 19) orient_spindle(b, first);
+    if (m >= 70 && m <= 73) modal_state_code(m);
 }
 
 // M7/M8/M9 (step 12).
@@ -110,7 +131,7 @@ void Interp::do_coolant(Block &b)
     }
 }
 
-// M48-M53 (step 13).
+// M48-M53 (step 13): P0 disables, P1 (or none) enables; M48/M49 both feed and speed.
 void Interp::do_overrides(Block &b)
 {
     INTERP_FRAME();
@@ -118,24 +139,24 @@ void Interp::do_overrides(Block &b)
     if (m == -1) return;
     if (s_.comp_side != CANON_SIDE_OFF)
         throw InterpError("Cannot change overrides with cutter radius compensation on");
-    bool on = !b.word('p') || b.value('p') != 0.0;
-    if (m == 48 || m == 49) on = m == 48;
-    if (m == 48 || m == 49 || m == 50) {
-        s_.feed_override = on;
-        if (on) out().enable_feed_override(); else out().disable_feed_override();
-    }
-    if (m == 48 || m == 49 || m == 51) {
+    bool on = m == 48 || (m != 49 && (!b.word('p') || b.value('p') != 0.0));
+    bool both = m == 48 || m == 49;
+    if (both || m == 50) set_switch(s_.feed_override, on, &Canon::enable_feed_override,
+                                    &Canon::disable_feed_override);
+    if (both || m == 51) {
         s_.speed_override = on;
-        if (on) out().enable_speed_override(0); else out().disable_speed_override(0);
+        on ? out().enable_speed_override(0) : out().disable_speed_override(0);
     }
-    if (m == 52) {
-        s_.adaptive_feed = on;
-        if (on) out().enable_adaptive_feed(); else out().disable_adaptive_feed();
-    }
-    if (m == 53) {
-        s_.feed_hold = on;
-        if (on) out().enable_feed_hold(); else out().disable_feed_hold();
-    }
+    if (m == 52) set_switch(s_.adaptive_feed, on, &Canon::enable_adaptive_feed,
+                            &Canon::disable_adaptive_feed);
+    if (m == 53) set_switch(s_.feed_hold, on, &Canon::enable_feed_hold, &Canon::disable_feed_hold);
+}
+
+// Set an override switch and emit its enable or disable call.
+void Interp::set_switch(bool &state, bool on, void (Canon::*enable)(), void (Canon::*disable)())
+{
+    state = on;
+    (out().*(on ? enable : disable))();
 }
 
 // M100-M199 (step 14): run by the user-M handler; without one (rs274) they are unknown.
@@ -159,11 +180,24 @@ InterpStatus Interp::do_stop(Block &b)
     if (m == 60) { out().pallet_shuttle(); out().program_stop(); }
     if (m == 0 || m == 1 || m == 60) return INTERP_OK;
     if (m == 99 && fanuc_return()) return INTERP_OK;
+    if (m == 99 && restart_main()) return INTERP_OK;
     m2_reset(m);
     return INTERP_EXIT;
 }
 
-// Program end resets (gcode.md §5 "M2/M30 resets").
+// M99 in the main program under task: continue at its first line (after an opening '%'), the
+// modal state kept; false when looping is off or the program is MDI.
+bool Interp::restart_main()
+{
+    INTERP_FRAME();
+    CallFrame &f = calls_.front();
+    if (!loop_main_m99_ || calls_.size() != 1 || !f.file) return false;
+    f.pos = f.file->percent ? f.file->percent_line + 1 : 0;
+    f.flow.clear();
+    return true;
+}
+
+// Program end resets (LinuxCNC's M2/M30 resets).
 void Interp::m2_reset(int code)
 {
     INTERP_FRAME();
@@ -203,7 +237,7 @@ void Interp::m2_reset(int code)
 // M2/M30 part: stop every spindle, leave CSS mode and re-enable the speed override.
 void Interp::m2_stop_spindles()
 {
-    for (int sp = 0; sp < SPINDLE_COUNT; sp++) {
+    for (int sp = 0; sp < s_.num_spindles; sp++) {
         out().stop_spindle_turning(sp);
         s_.spindle_dir[sp] = CANON_STOPPED;
         out().set_spindle_mode(sp, 0);

@@ -67,35 +67,14 @@ void Interp::do_comp(Block &b)
     INTERP_FRAME();
     int g = b.g_modes[GG_COMP];
     if (g == -1) return;
-    if (g == 400) {
-        out().comment("interpreter: cutter radius compensation off");
-        if (comp_ && s_.comp_side != CANON_SIDE_OFF) comp_->stop(s_);
-        s_.comp_side = CANON_SIDE_OFF;
-        s_.comp_code = 400;
-        return;
-    }
+    if (g == 400) return comp_off();
     if (s_.comp_side != CANON_SIDE_OFF)
         throw InterpError("Cannot turn cutter radius comp on when on");
     if (s_.plane != CANON_PLANE_XY && s_.plane != CANON_PLANE_XZ)
         throw InterpError("Cutter radius compensation allowed only in XY, XZ planes");
-    double radius;
     int orient = 0;
-    if (g == 411 || g == 421) {
-        if (b.word('l') && s_.plane != CANON_PLANE_XZ)
-            throw InterpError("G41.1 with L word, but plane is not G18");
-        double dia = b.word('d') ? b.value('d') : 0.0;
-        if (dia < 0) g = g == 411 ? 421 : 411;
-        radius = std::fabs(dia) / 2.0;
-        orient = b.word('l') ? clamp_int(b.value('l')) : 0;
-    } else {
-        int tool = b.word('d') ? clamp_int(b.value('d')) : 0;
-        int index = tool == 0 ? 0 : find_tool_index(tool);
-        if (index < 0)
-            throw InterpError("Requested tool " + std::to_string(tool) +
-                              " not found in the tool table");
-        radius = s_.tools[index].diameter / 2.0 * s_.machine_to_program();
-        orient = s_.tools[index].orientation;
-    }
+    double radius = g == 411 || g == 421 ? dynamic_comp_radius(b, g, orient)
+                                         : tool_comp_radius(b, orient);
     bool left = g == 410 || g == 411;
     out().comment(left ? "interpreter: cutter radius compensation on left"
                        : "interpreter: cutter radius compensation on right");
@@ -107,6 +86,48 @@ void Interp::do_comp(Block &b)
     comp_->start(s_);
 }
 
+// G40: comp off (the engine leaves from the last compensated point).
+void Interp::comp_off()
+{
+    out().comment("interpreter: cutter radius compensation off");
+    if (comp_ && s_.comp_side != CANON_SIDE_OFF) comp_->stop(s_);
+    s_.comp_side = CANON_SIDE_OFF;
+    s_.comp_code = 400;
+}
+
+// G41.1/G42.1: radius from the D diameter (a negative one swaps the side), L orientation.
+double Interp::dynamic_comp_radius(const Block &b, int &g, int &orient) const
+{
+    if (b.word('l') && s_.plane != CANON_PLANE_XZ)
+        throw InterpError("G41.1 with L word, but plane is not G18");
+    double dia = b.word('d') ? b.value('d') : 0.0;
+    if (dia < 0) g = g == 411 ? 421 : 411;
+    orient = b.word('l') ? clamp_int(b.value('l')) : 0;
+    return std::fabs(dia) / 2.0;
+}
+
+// G41/G42: radius and orientation of tool D (D0 or none: the loaded tool).
+double Interp::tool_comp_radius(const Block &b, int &orient) const
+{
+    int tool = b.word('d') ? clamp_int(b.value('d')) : 0;
+    int index = tool == 0 ? 0 : find_tool_index(tool);
+    if (index < 0)
+        throw InterpError("Requested tool " + std::to_string(tool) + " not found in the tool table");
+    orient = s_.tools[index].orientation;
+    return s_.tools[index].diameter / 2.0 * s_.machine_to_program();
+}
+
+// Tool-data index of a block's H word (none or H0: the loaded tool).
+int Interp::h_word_index(const Block &b) const
+{
+    if (!b.word('h')) return 0;
+    int h = clamp_int(b.value('h'));
+    int index = h == 0 ? 0 : find_tool_index(h);
+    if (index < 0)
+        throw InterpError("Requested tool " + std::to_string(h) + " not found in the tool table");
+    return index;
+}
+
 // G43/G43.1/G43.2/G49 (step 20).
 void Interp::do_tool_length(Block &b)
 {
@@ -116,46 +137,36 @@ void Interp::do_tool_length(Block &b)
     if (s_.comp_side != CANON_SIDE_OFF)
         throw InterpError("Cannot change tool offset with cutter radius compensation on");
     Pose tlo{};
-    double k = s_.machine_to_program();
-    auto tool_pose = [&](int index) {
-        const CanonPose &o = s_.tools[index].offset;
-        return Pose{o.x * k, o.y * k, o.z * k, o.a, o.b, o.c, o.u * k, o.v * k, o.w * k};
-    };
-    auto tool_index = [&]() {
-        if (!b.word('h')) return 0;
-        int h = clamp_int(b.value('h'));
-        int index = h == 0 ? 0 : find_tool_index(h);
-        if (index < 0)
-            throw InterpError("Requested tool " + std::to_string(h) + " not found in the tool table");
-        return index;
-    };
-    static const char axes[] = "xyzabc";
-    if (g == 430) {
-        tlo = tool_pose(tool_index());
-    } else if (g == 431) {
-        tlo = s_.tool_offset;
-        for (int i = 0; i < 6; i++)
-            if (b.word(axes[i])) tlo[i] = b.value(axes[i]);
-    } else if (g == 432) {
-        bool any = false;
-        for (int i = 0; i < 6; i++) any = any || b.word(axes[i]);
-        if (any && b.word('h')) throw InterpError("G43.2: Can not have both H and axis words");
-        tlo = s_.tool_offset;
-        Pose add = any ? Pose{} : tool_pose(tool_index());
-        for (int i = 0; i < 6; i++)
-            if (b.word(axes[i])) add[i] = b.value(axes[i]);
-        for (int i = 0; i < AX_COUNT; i++) tlo[i] += add[i];
-    }
+    if (g == 430) tlo = tool_pose(s_.tools[h_word_index(b)]);
+    if (g == 431 || g == 432) tlo = tlo_words(b, g);
     s_.tlo_code = g;
     apply_tlo(tlo);
+}
+
+// G43.1 (axis words replace) and G43.2 (H tool or axis words add to) the active offset.
+Pose Interp::tlo_words(const Block &b, int g) const
+{
+    static const char axes[] = "xyzabc";
+    bool any = false;
+    for (int i = 0; i < 6; i++) any = any || b.word(axes[i]);
+    if (g == 432 && any && b.word('h')) throw InterpError("G43.2: Can not have both H and axis words");
+    Pose tlo = s_.tool_offset;
+    Pose add = g == 432 && !any ? tool_pose(s_.tools[h_word_index(b)]) : Pose{};
+    for (int i = 0; i < 6; i++) {
+        if (!b.word(axes[i])) continue;
+        (g == 431 ? tlo[i] : add[i]) = b.value(axes[i]);
+    }
+    for (int i = 0; i < AX_COUNT; i++) tlo[i] += add[i];
+    return tlo;
 }
 
 // Make tlo the active tool length offset: adjust the position, emit, update #5081-#5089.
 void Interp::apply_tlo(const Pose &tlo)
 {
     INTERP_FRAME();
-    for (int i = 0; i < AX_COUNT; i++) s_.current[i] += s_.tool_offset[i] - tlo[i];
+    Pose m = program_to_machine_pose(s_.current);
     s_.tool_offset = tlo;
+    s_.current = machine_to_program_pose(m);
     out().use_tool_length_offset(to_canon_pose(tlo));
     double k = 1.0 / s_.machine_to_program();
     for (int i = 0; i < AX_COUNT; i++)

@@ -55,6 +55,12 @@ void Interp::modal_restore_block(const SavedModal &m, Block &b) const
         b.val['p' - 'a'] = m.tolerance;
         b.val['q' - 'a'] = m.naivecam_tolerance;
     }
+    restore_modal_codes(m, b);
+}
+
+// The G codes of two-state groups that differ from the saved state.
+void Interp::restore_modal_codes(const SavedModal &m, Block &b) const
+{
     if (m.distance_incremental != s_.distance_incremental)
         b.g_modes[GG_DISTANCE] = m.distance_incremental ? 910 : 900;
     if (m.ijk_absolute != s_.ijk_absolute) b.g_modes[GG_IJK] = m.ijk_absolute ? 901 : 911;

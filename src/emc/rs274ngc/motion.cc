@@ -2,6 +2,7 @@
 #include <cmath>
 
 #include "interp.hh"
+#include "polar.hh"
 
 namespace {
 
@@ -18,40 +19,72 @@ bool any_axis(const Block &b)
 
 } // namespace
 
+// Group-0 codes handled at the motion step (G28/G30 and their .1, G5.3); true when the block's
+// motion is done (G10, G52, G92 suspend the modal motion for the line).
+bool Interp::nonmodal_motion(const Block &b)
+{
+    int g0 = b.g_modes[GG_NONMODAL];
+    if (g0 == 280 || g0 == 300) move_home(b, g0);
+    else if (g0 == 281 || g0 == 301) store_home(g0);
+    else if (g0 == 53) nurbs_close(b);
+    return g0 == 280 || g0 == 300 || g0 == 281 || g0 == 301 || g0 == 53 || g0 == 100 ||
+           g0 == 520 || g0 == 920;
+}
+
+// The motion codes, by range of code ×10: handler and whether the block ends with
+// execute-finish (probing).
+struct MotionHandler {
+    int lo, hi;
+    void (Interp::*run)(const Block &, int);
+    bool finish;
+};
+
+const MotionHandler MOTION_HANDLERS[] = {
+    {0, 10, &Interp::move_straight, false},   {20, 30, &Interp::move_arc, false},
+    {330, 331, &Interp::move_g33, false},     {382, 385, &Interp::move_probe, true},
+    {52, 52, &Interp::nurbs_point, false},    {50, 51, &Interp::move_spline, false},
+};
+
+// G80 and the canned and lathe cycles; true when m is one of them.
+bool Interp::cycle_or_cancel(Block &b, int m)
+{
+    if (m == 800) {
+        out().comment("interpreter: motion mode set to none");
+        s_.cycle_last = -1;
+        return true;
+    }
+    bool cycle = m == 730 || m == 740 || (m >= 810 && m <= 890) || m == 760 || (m >= 700 && m <= 722);
+    if (cycle) move_cycle(b);
+    return cycle;
+}
+
+// Takes the block's explicit motion code as the mode; true when a motion runs on this line
+// (an explicit code, or the modal one with axis words that no G43.1/G43.2 consumes).
+bool Interp::motion_runs(const Block &b)
+{
+    int explicit_motion = b.motion();
+    int tl = b.g_modes[GG_TOOL_LENGTH];
+    if (explicit_motion != -1) s_.motion_mode = explicit_motion;
+    return explicit_motion != -1 || (tl != 431 && tl != 432 && any_axis(b));
+}
+
 // Motion step (28); returns true when the block must end with execute-finish.
 bool Interp::do_motion(Block &b)
 {
     INTERP_FRAME();
-    int g0 = b.g_modes[GG_NONMODAL];
-    if (g0 == 280 || g0 == 300) { move_home(b, g0); return false; }
-    if (g0 == 281 || g0 == 301) { store_home(g0); return false; }
-    if (g0 == 100 || g0 == 520 || g0 == 920) return false;
-    if (g0 == 53) { nurbs_close(b); return false; }
-    int explicit_motion = b.motion();
-    int tl = b.g_modes[GG_TOOL_LENGTH];
-    if (explicit_motion == -1 && (tl == 431 || tl == 432)) return false;
-    if (explicit_motion != -1) s_.motion_mode = explicit_motion;
+    if (nonmodal_motion(b)) return false;
+    if (!motion_runs(b)) return false;
     int m = s_.motion_mode;
-    if (explicit_motion == -1 && !any_axis(b)) return false;
-    if (g_remaps_.count(m)) return false;
     if (nurbs_open_ && m != 52) throw InterpError("Must close the G5.2 block with G5.3 first");
-    if (m == 800) {
-        out().comment("interpreter: motion mode set to none");
-        s_.cycle_last = -1;
-        return false;
-    }
-    bool cycle = m == 730 || m == 740 || (m >= 810 && m <= 890) || m == 760 ||
-                 (m >= 700 && m <= 722);
-    if (cycle) { move_cycle(b); return false; }
+    if (cycle_or_cancel(b, m)) return false;
     s_.cycle_last = -1;
     s_.cycle_il_valid = false;
     if (m != 50 && m != 51) spline_continues_ = false;
-    if (m == 0 || m == 10) { move_straight(b, m); return false; }
-    if (m == 20 || m == 30) { move_arc(b, m); return false; }
-    if (m == 330 || m == 331) { move_g33(b, m == 331); return false; }
-    if (m >= 382 && m <= 385) { move_probe(b); return true; }
-    if (m == 52) { nurbs_point(b); return false; }
-    move_spline(b, m);
+    for (const MotionHandler &h : MOTION_HANDLERS) {
+        if (m < h.lo || m > h.hi) continue;
+        (this->*h.run)(b, m);
+        return h.finish;
+    }
     return false;
 }
 
@@ -79,20 +112,9 @@ void Interp::polar_end(const Block &b, Pose &end)
     INTERP_FRAME();
     if (s_.plane != CANON_PLANE_XY) throw InterpError("Polar coordinates only in the XY plane");
     double x = s_.current[AX_X], y = s_.current[AX_Y];
-    double r = std::hypot(x, y);
-    double a = std::atan2(y, x) / DEG;
-    if (s_.distance_incremental) {
-        if (r == 0.0 && b.has_polar_angle)
-            throw InterpError("Incremental motion with polar coordinates is indeterminate when "
-                              "at the origin");
-        r += b.has_polar_radius ? b.polar_radius : 0.0;
-        a += b.has_polar_angle ? b.polar_angle : 0.0;
-    } else {
-        if (b.has_polar_radius) r = b.polar_radius;
-        if (b.has_polar_angle) a = b.polar_angle;
-    }
-    end[AX_X] = r * std::cos(a * DEG);
-    end[AX_Y] = r * std::sin(a * DEG);
+    polar_point(b, s_.distance_incremental, x, y);
+    end[AX_X] = x;
+    end[AX_Y] = y;
 }
 
 // In G93 emit SET_FEED_RATE(length * F) before a move.
@@ -173,15 +195,16 @@ void Interp::store_home(int code)
 }
 
 // G33 (spindle-synchronized move) / G33.1 (rigid tap).
-void Interp::move_g33(const Block &b, bool rigid)
+void Interp::move_g33(const Block &b, int code)
 {
+    bool rigid = code == 331;
     INTERP_FRAME();
     if (s_.comp_side != CANON_SIDE_OFF && rigid)
         throw InterpError("Cannot use G33.1 with cutter radius compensation");
     if (b.word('f')) throw InterpError("F word used with a g33/g33.1");
     if (!b.word('k')) throw InterpError("K word missing with g33/g33.1");
-    int sp = b.has_dollar ? (int)b.dollar : 0;
-    if (!rigid && s_.spindle_dir[0] == CANON_STOPPED) throw InterpError("Spindle not turning in G33");
+    int sp = s_.spindle_of(b);
+    if (!rigid && s_.spindle_dir[sp] == CANON_STOPPED) throw InterpError("Spindle not turning in G33");
     Pose end = find_end(b);
     out().start_speed_feed_synch(sp, b.value('k'), false);
     if (rigid) {
@@ -195,7 +218,7 @@ void Interp::move_g33(const Block &b, bool rigid)
 }
 
 // G38.2-G38.5 straight probe.
-void Interp::move_probe(const Block &b)
+void Interp::move_probe(const Block &b, int)
 {
     INTERP_FRAME();
     if (!any_axis(b)) throw InterpError("All axes missing with motion code");
@@ -231,7 +254,7 @@ void Interp::move_cycle(Block &b)
 {
     INTERP_FRAME();
     int m = s_.motion_mode;
-    if (s_.comp_side != CANON_SIDE_OFF)
+    if (s_.comp_side != CANON_SIDE_OFF && m != 700)
         throw InterpError("Cannot use canned cycles with cutter radius compensation");
     if (m == 760) {
         if (!cycles::execute_g76) throw InterpError("G76 threading cycle not supported");

@@ -90,6 +90,23 @@ void Interp::do_g92_family(Block &b)
     if (g != -1) g92_family(g, b);
 }
 
+// G52/G92: set the offsets of the axes given; the current point moves by the offset change
+// (G92: the current point gets the given values).
+void Interp::g92_set(int code, const Block &b)
+{
+    bool any = false;
+    for (int i = 0; i < 6; i++) any = any || b.word(AXES[i]);
+    if (!any) throw InterpError("All axes missing with g52 or g92");
+    for (int i = 0; i < 6; i++) {
+        if (!b.word(AXES[i])) continue;
+        double v = axis_word(b, i);
+        double old = s_.axis_offset[i];
+        s_.axis_offset[i] = code == 520 ? v : s_.current[i] + old - v;
+        s_.current[i] = code == 520 ? s_.current[i] + old - v : v;
+    }
+    s_.params[5210] = 1;
+}
+
 // G52, G92, G92.1, G92.2, G92.3.
 void Interp::g92_family(int code, const Block &b)
 {
@@ -97,30 +114,18 @@ void Interp::g92_family(int code, const Block &b)
     if (s_.comp_side != CANON_SIDE_OFF)
         throw InterpError("Cannot change axis offsets with cutter radius comp");
     double k = s_.machine_to_program();
-    Pose m = program_to_machine_pose(s_.current);
-    if (code == 520 || code == 920) {
-        bool any = false;
-        for (int i = 0; i < 6; i++) any = any || b.word(AXES[i]);
-        if (!any) throw InterpError("All axes missing with g52 or g92");
-        for (int i = 0; i < 6; i++) {
-            if (!b.word(AXES[i])) continue;
-            double v = b.value(AXES[i]);
-            if (i == AX_X && s_.lathe_diameter) v /= 2.0;
-            s_.axis_offset[i] = code == 520 ? v : s_.current[i] + s_.axis_offset[i] - v;
-        }
-        s_.params[5210] = 1;
-    } else if (code == 921 || code == 922) {
-        s_.axis_offset = Pose{};
-        s_.params[5210] = 0;
-    } else {
-        for (int i = 0; i < AX_COUNT; i++)
-            s_.axis_offset[i] = s_.params[5211 + i] * (rotary(i) ? 1.0 : k);
-        s_.params[5210] = 1;
+    if (code == 520 || code == 920) g92_set(code, b);
+    Pose stored;
+    for (int i = 0; i < AX_COUNT; i++) stored[i] = s_.params[5211 + i] * (rotary(i) ? 1.0 : k);
+    if (code >= 921) {
+        Pose next = code == 923 ? stored : Pose{};
+        for (int i = 0; i < AX_COUNT; i++) s_.current[i] += s_.axis_offset[i] - next[i];
+        s_.axis_offset = next;
+        s_.params[5210] = code == 923 ? 1 : 0;
     }
     if (code != 922)
         for (int i = 0; i < AX_COUNT; i++)
             s_.params[5211 + i] = s_.axis_offset[i] / (rotary(i) ? 1.0 : k);
-    s_.current = machine_to_program_pose(m);
     emit_g92();
 }
 
@@ -138,30 +143,62 @@ void Interp::g10(const Block &b)
 void Interp::g10_l2(const Block &b, int l)
 {
     INTERP_FRAME();
+    int index = g10_system(b);
+    double k = s_.machine_to_program();
+    Pose m = program_to_machine_pose(s_.current);
+    Pose offs;
+    for (int i = 0; i < AX_COUNT; i++)
+        offs[i] = s_.params[5201 + 20 * index + i] * (rotary(i) ? 1.0 : k);
+    if (b.word('r')) s_.params[5210 + 20 * index] = b.value('r');
+    double rot = s_.params[5210 + 20 * index];
+    if (l == 20) {
+        Pose q;
+        for (int i = 0; i < AX_COUNT; i++) q[i] = m[i] - s_.tool_offset[i];
+        offs = offsets_for_point(b, q, s_.axis_offset, offs, rot);
+    } else {
+        for (int i = 0; i < 6; i++)
+            if (b.word(AXES[i])) offs[i] = axis_word(b, i);
+    }
+    for (int i = 0; i < AX_COUNT; i++)
+        s_.params[5201 + 20 * index + i] = offs[i] / (rotary(i) ? 1.0 : k);
+    if (index != s_.origin_index) {
+        out().comment("interpreter: setting coordinate system origin");
+        return;
+    }
+    s_.origin_offset = offs;
+    s_.rotation_xy = rot;
+    s_.current = machine_to_program_pose(m);
+    emit_g5x();
+    out().set_xy_rotation(s_.rotation_xy);
+}
+
+// The coordinate system a G10 L2/L20 P word names (P0: the active one).
+int Interp::g10_system(const Block &b) const
+{
     if (!b.word('p')) throw InterpError("P word missing with G10 L2");
     double pv = b.value('p');
     int p = clamp_int(pv);
     if (std::fabs(pv - p) > 0.0001 || p < 0 || p > 9)
         throw InterpError("P value out of range (0-9) with G10 L2");
-    int index = p == 0 ? s_.origin_index : p;
-    double k = s_.machine_to_program();
-    Pose m = program_to_machine_pose(s_.current);
-    for (int i = 0; i < 6; i++) {
-        if (!b.word(AXES[i])) continue;
-        double v = b.value(AXES[i]);
-        if (i == AX_X && s_.lathe_diameter) v /= 2.0;
-        if (l == 20) v = m[i] - s_.tool_offset[i] - s_.axis_offset[i] - v;
-        s_.params[5201 + 20 * index + i] = v / (rotary(i) ? 1.0 : k);
-    }
-    if (b.word('r')) s_.params[5210 + 20 * index] = b.value('r');
-    if (index != s_.origin_index) {
-        out().comment("interpreter: setting coordinate system origin");
-        return;
-    }
-    for (int i = 0; i < AX_COUNT; i++)
-        s_.origin_offset[i] = s_.params[5201 + 20 * index + i] * (rotary(i) ? 1.0 : k);
-    s_.rotation_xy = s_.params[5210 + 20 * index];
-    s_.current = machine_to_program_pose(m);
-    emit_g5x();
-    out().set_xy_rotation(s_.rotation_xy);
+    return p == 0 ? s_.origin_index : p;
+}
+
+// Value of axis word i of a block (X halved in lathe diameter mode).
+double Interp::axis_word(const Block &b, int i) const
+{
+    double v = b.value(AXES[i]);
+    return (i == AX_X && s_.lathe_diameter) ? v / 2.0 : v;
+}
+
+// G10 L10/L11/L20 arithmetic: the offset (machine frame, program units) that makes point q
+// (machine frame, relative to that offset) read the block's axis values in a frame rotated by
+// rot and shifted by shift; axes without a word keep the coordinate `old` gives them.
+Pose Interp::offsets_for_point(const Block &b, Pose q, const Pose &shift, Pose old, double rot) const
+{
+    rotate_xy(q[AX_X], q[AX_Y], -rot);
+    rotate_xy(old[AX_X], old[AX_Y], -rot);
+    for (int i = 0; i < 6; i++)
+        if (b.word(AXES[i])) old[i] = q[i] - shift[i] - axis_word(b, i);
+    rotate_xy(old[AX_X], old[AX_Y], rot);
+    return old;
 }

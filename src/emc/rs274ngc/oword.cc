@@ -9,9 +9,6 @@
 namespace {
 
 constexpr size_t MAX_CALL_LEVELS = 10;
-constexpr long LOOP_LIMIT = 1000000;
-// Passes of all loops together that one program (or MDI command) may run: a runaway guard for nested loops.
-constexpr long TOTAL_LOOP_LIMIT = 10000000;
 
 } // namespace
 
@@ -24,28 +21,10 @@ bool Interp::peek_oword(const std::string &line, std::string &name, OKind &kind)
         if (c == '(' || c == ';') break;
         if (c != ' ' && c != '\t') t += (char)tolower((unsigned char)c);
     }
-    size_t pos = 0;
-    if (pos < t.size() && t[pos] == '/') pos++;
-    if (pos < t.size() && t[pos] == 'n') {
-        pos++;
-        while (pos < t.size() && (isdigit((unsigned char)t[pos]) || t[pos] == '.')) pos++;
-    }
-    if (pos >= t.size() || t[pos] != 'o') return false;
-    pos++;
-    if (pos < t.size() && t[pos] == '<') {
-        size_t end = t.find('>', pos);
-        if (end == std::string::npos) return false;
-        name = t.substr(pos + 1, end - pos - 1);
-        pos = end + 1;
-    } else {
-        size_t start = pos;
-        while (pos < t.size() && isdigit((unsigned char)t[pos])) pos++;
-        if (pos == start) return false;
-        name = std::to_string(atol(t.c_str() + start));
-    }
+    size_t pos = skip_line_number(t);
+    if (pos >= t.size() || t[pos] != 'o' || !peek_label(t, ++pos, name)) return false;
     size_t start = pos;
     while (pos < t.size() && t[pos] >= 'a' && t[pos] <= 'z') pos++;
-    Block b;
     std::string key = t.substr(start, pos - start);
     static const char *const keys[] = {"", "sub", "endsub", "call", "return", "if", "elseif",
                                        "else", "endif", "while", "endwhile", "do", "break",
@@ -54,6 +33,35 @@ bool Interp::peek_oword(const std::string &line, std::string &name, OKind &kind)
     for (int i = 1; i < 16; i++)
         if (key == keys[i]) kind = (OKind)i;
     return kind != O_NONE;
+}
+
+// Position after the block-delete slash and line number of a normalized line.
+size_t skip_line_number(const std::string &t)
+{
+    size_t pos = 0;
+    if (pos < t.size() && t[pos] == '/') pos++;
+    if (pos < t.size() && t[pos] == 'n') {
+        pos++;
+        while (pos < t.size() && (isdigit((unsigned char)t[pos]) || t[pos] == '.')) pos++;
+    }
+    return pos;
+}
+
+// The label after an 'o' of a normalized line: "<name>" or digits; false when neither.
+bool peek_label(const std::string &t, size_t &pos, std::string &name)
+{
+    if (pos < t.size() && t[pos] == '<') {
+        size_t end = t.find('>', pos);
+        if (end == std::string::npos) return false;
+        name = t.substr(pos + 1, end - pos - 1);
+        pos = end + 1;
+        return true;
+    }
+    size_t start = pos;
+    while (pos < t.size() && isdigit((unsigned char)t[pos])) pos++;
+    if (pos == start) return false;
+    name = std::to_string(atol(t.c_str() + start));
+    return true;
 }
 
 // Start skipping lines until an O-word with this name and one of these kinds.
@@ -98,25 +106,22 @@ std::string Interp::flow_error(const std::string &what, const Block &) const
     return std::to_string(s_.sequence_number) + ": " + what + ": '" + s_.line_text + "'";
 }
 
-// Dispatch an O-word line.
+// Dispatch an O-word line to its keyword's handler.
 InterpStatus Interp::execute_oword(Block &b)
 {
     INTERP_FRAME();
-    switch (b.o_kind) {
-    case O_SUB: o_sub(b); break;
-    case O_ENDSUB: case O_RETURN: o_return(b); break;
-    case O_CALL: o_call(b); break;
-    case O_IF: o_if(b); break;
-    case O_ELSEIF: case O_ELSE: o_else(b); break;
-    case O_ENDIF: o_endif(b); break;
-    case O_WHILE: o_while(b); break;
-    case O_DO: o_do(b); break;
-    case O_ENDWHILE: case O_ENDREPEAT: o_loop_end(b); break;
-    case O_REPEAT: o_repeat(b); break;
-    case O_BREAK: o_break(b, false); break;
-    case O_CONTINUE: o_break(b, true); break;
-    default: break;
-    }
+    static const struct { OKind kind; void (Interp::*run)(Block &); } handlers[] = {
+        {O_SUB, &Interp::o_sub},           {O_CALL, &Interp::o_call},
+        {O_IF, &Interp::o_if},             {O_ELSEIF, &Interp::o_else},
+        {O_ELSE, &Interp::o_else},         {O_ENDIF, &Interp::o_endif},
+        {O_WHILE, &Interp::o_while},       {O_DO, &Interp::o_do},
+        {O_ENDWHILE, &Interp::o_loop_end}, {O_ENDREPEAT, &Interp::o_loop_end},
+        {O_REPEAT, &Interp::o_repeat},     {O_BREAK, &Interp::o_break},
+        {O_CONTINUE, &Interp::o_continue},
+    };
+    if (b.o_kind == O_ENDSUB || b.o_kind == O_RETURN) return o_return(b);
+    for (const auto &h : handlers)
+        if (h.kind == b.o_kind) (this->*h.run)(b);
     return INTERP_OK;
 }
 
@@ -126,66 +131,155 @@ void Interp::o_sub(Block &b)
     INTERP_FRAME();
     CallFrame &f = calls_.back();
     if (f.sub_name == b.o_name && f.pos - 1 == f.sub_line) return;
-    subs_[b.o_name] = SubDef{f.file, f.pos - 1};
+    if (calls_.size() > 1) throw InterpError("Nested subroutine definition");
+    auto it = subs_.find(b.o_name);
+    if (it != subs_.end() && (it->second.file != f.file || it->second.line != f.pos - 1))
+        throw InterpError("Subroutine o" + label_text(b.o_name) + " is already defined (" +
+                          it->second.file->path + " line " +
+                          std::to_string(it->second.line + 1) + ")");
+    subs_[b.o_name] = SubDef{f.file, f.pos - 1, false};
     skip_to(b.o_name, {O_ENDSUB}, true);
     skip_sub_ = true;
 }
 
-// "return"/"endsub": leave the subroutine with an optional value.
-void Interp::o_return(Block &b)
+// "return"/"endsub": leave the subroutine with an optional value; for a remap procedure the epilog
+// runs at this call level, then the block that called it finishes.
+InterpStatus Interp::o_return(Block &b)
 {
     INTERP_FRAME();
     CallFrame &f = calls_.back();
-    if (calls_.size() < 2 || f.fanuc || (b.o_kind == O_ENDSUB && f.sub_name != b.o_name))
-        return flow_fail("not in a subroutine definition", b);
+    if (f.fanuc) throw InterpError("Fanuc 'O....' subroutine definition must end with 'M99'");
+    if (calls_.size() < 2 || (b.o_kind == O_ENDSUB && f.sub_name != b.o_name)) {
+        flow_fail("not in a subroutine definition", b);
+        return INTERP_OK;
+    }
     if (f.autorestore && f.saved.valid) modal_restore(f.saved);
-    pop_call();
+    bool remap = in_remap_frame();
+    if (!remap) pop_call();
     value_ = b.o_has_expr ? b.o_value : 0.0;
     value_returned_ = b.o_has_expr ? 1.0 : 0.0;
+    return remap ? remap_after_body() : INTERP_OK;
 }
 
 // "call": find the subroutine and enter it.
 void Interp::o_call(Block &b)
 {
     INTERP_FRAME();
+    if (python_oword(b)) return;
     SubDef def;
-    if (!find_sub(b.o_name, def)) {
-        std::string label = isdigit((unsigned char)b.o_name[0]) ? b.o_name : "<" + b.o_name + ">";
-        throw InterpError("EOF in file:" + calls_.back().file->path + " seeking o-word: o" +
-                          label + " from line: " + std::to_string(s_.sequence_number));
-    }
+    if (!find_sub(b.o_name, def, false)) sub_not_found(b.o_name, false);
     push_call(def, b.o_name, b.o_args, false);
 }
 
-// Locate a subroutine: known, later in the current file, or in a file on the search path.
-bool Interp::find_sub(const std::string &name, SubDef &def)
+// A subroutine a remap or a lathe cycle names: known, in its own file, or anywhere in the
+// main program (no side effects).
+bool Interp::lookup_sub(const std::string &name, SubDef &def)
 {
     INTERP_FRAME();
     auto it = subs_.find(name);
-    if (it != subs_.end()) { def = it->second; return true; }
-    CallFrame &f = calls_.back();
+    if (it != subs_.end() && !it->second.fanuc) {
+        def = it->second;
+        return true;
+    }
+    if (find_sub_file(name, def)) return true;
+    const auto &main = calls_[0].file;
+    size_t line;
+    if (!main || scan_for_sub(*main, 0, name, line) != SubScan::SUB) return false;
+    def = SubDef{main, line, false};
+    return true;
+}
+
+// "<name>" for named labels, the number for numbered ones.
+std::string label_text(const std::string &name)
+{
+    return isdigit((unsigned char)name[0]) ? name : "<" + name + ">";
+}
+
+// The error for a call whose subroutine exists nowhere.
+void Interp::sub_not_found(const std::string &name, bool)
+{
+    INTERP_FRAME();
+    size_t level = calls_.size() - 1;
+    while (level > 0 && !calls_[level].file) level--;   // Python's call levels read no file
+    const std::string &path = calls_[level].file ? calls_[level].file->path : std::string("(MDI)");
+    throw InterpError("EOF in file:" + path + " seeking o-word: o" +
+                      label_text(name) + " from line: " + std::to_string(s_.sequence_number));
+}
+
+// Scan f from line `from` for the definition of `name` ("o<name> sub" or a bare Fanuc
+// "O<n>"), stopping at the '%' that closes the program.
+SubScan Interp::scan_for_sub(const SourceFile &f, size_t from, const std::string &name,
+                             size_t &line)
+{
+    INTERP_FRAME();
     std::string n;
     OKind k;
-    for (size_t i = f.pos; i < f.file->lines.size(); i++) {
-        if (peek_oword(f.file->lines[i], n, k) && k == O_SUB && n == name) {
-            def = SubDef{f.file, i};
-            subs_[name] = def;
-            return true;
-        }
+    for (line = from; line < f.lines.size(); line++) {
+        if (f.closes(line)) return SubScan::PERCENT;
+        if (peek_oword(f.lines[line], n, k) && k == O_SUB && n == name) return SubScan::SUB;
+        if (fanuc_label_name(f.lines[line]) == name) return SubScan::FANUC;
     }
+    return SubScan::END;
+}
+
+// A call of one style must not reach a definition of the other.
+void Interp::check_sub_style(const SubDef &def, bool fanuc) const
+{
+    INTERP_FRAME();
+    if (def.fanuc == fanuc) return;
+    const std::string &line = def.file->lines[def.line];
+    if (fanuc)
+        throw InterpErrorAt("'O.... sub' subroutine must be called with 'O.... call'", line);
+    throw InterpErrorAt("Fanuc 'O....' subroutine must be called with 'M98'", line);
+}
+
+// Locate a subroutine: known, later in the current file (top level only), or in a file on the
+// search path. A search that reaches the closing '%' ends the program there (FINISH).
+bool Interp::find_sub(const std::string &name, SubDef &def, bool fanuc)
+{
+    INTERP_FRAME();
+    auto it = subs_.find(name);
+    if (it != subs_.end()) {
+        def = it->second;
+        check_sub_style(def, fanuc);
+        return true;
+    }
+    CallFrame &f = calls_.back();
+    if ((calls_.size() > 1 && !fanuc) || !f.file) return !fanuc && find_sub_file(name, def);
+    size_t line;
+    SubScan hit = scan_for_sub(*f.file, f.pos, name, line);
+    if (hit == SubScan::PERCENT) {
+        out().finish();
+        throw InterpErrorAt("EOF in file:" + f.file->path + " seeking o-word: o" +
+                            label_text(name) + " from line: " +
+                            std::to_string(s_.sequence_number), f.file->lines[line]);
+    }
+    if (hit == SubScan::END) return !fanuc && find_sub_file(name, def);
+    def = SubDef{f.file, line, hit == SubScan::FANUC};
+    check_sub_style(def, fanuc);
+    subs_[name] = def;
+    return true;
+}
+
+// A subroutine in its own file <name>.ngc on PROGRAM_PREFIX, SUBROUTINE_PATH, WIZARD_ROOT or
+// beside the main program.
+bool Interp::find_sub_file(const std::string &name, SubDef &def)
+{
+    INTERP_FRAME();
     std::vector<std::string> dirs;
     if (!s_.settings.program_prefix.empty()) dirs.push_back(s_.settings.program_prefix);
     for (const std::string &d : s_.settings.subroutine_path) dirs.push_back(d);
     if (!s_.settings.wizard_root.empty()) dirs.push_back(s_.settings.wizard_root);
+    const std::string &main = calls_[0].file ? calls_[0].file->path : std::string();
+    size_t slash = main.rfind('/');
+    dirs.push_back(slash == std::string::npos ? "." : main.substr(0, slash));
     for (const std::string &d : dirs) {
-        auto file = load_file(d + "/" + name + ".ngc");
+        auto file = load_sub_file((d.empty() ? std::string(".") : d) + "/" + name + ".ngc");
         if (!file) continue;
-        for (size_t i = 0; i < file->lines.size(); i++) {
-            if (peek_oword(file->lines[i], n, k) && k == O_SUB && n == name) {
-                def = SubDef{file, i};
-                return true;
-            }
-        }
+        size_t line;
+        if (scan_for_sub(*file, 0, name, line) != SubScan::SUB) continue;
+        def = SubDef{file, line, false};
+        return true;
     }
     return false;
 }
@@ -221,8 +315,6 @@ void Interp::pop_call()
     CallFrame &f = calls_.back();
     if (!f.fanuc)
         for (int i = 1; i <= 30; i++) s_.params[i] = f.saved_args[i];
-    if (f.remap) remap_level_--;
-    if (f.remap_motion != -1) s_.motion_mode = f.remap_motion;
     calls_.pop_back();
     s_.call_level = (int)calls_.size() - 1;
 }
@@ -332,8 +424,20 @@ void Interp::o_loop_end(Block &b)
         f.flow.pop_back();
 }
 
-// "break" (leave the loop) or "continue" (next iteration).
-void Interp::o_break(Block &b, bool cont)
+// "break": leave the loop.
+void Interp::o_break(Block &b)
+{
+    leave_loop(b, false);
+}
+
+// "continue": next iteration of the loop.
+void Interp::o_continue(Block &b)
+{
+    leave_loop(b, true);
+}
+
+// Skip to the end of the innermost loop named by b (past it for break, onto it for continue).
+void Interp::leave_loop(Block &b, bool cont)
 {
     INTERP_FRAME();
     CallFrame &f = calls_.back();
@@ -346,15 +450,17 @@ void Interp::o_break(Block &b, bool cont)
     skip_to(b.o_name, {end}, !cont);
 }
 
-// Guard against endless loops: a clear error instead of a hang.
+// Guard against endless loops: a clear error instead of a hang ([RS274NGC]
+// MAX_LOOP_ITERATIONS / MAX_TOTAL_LOOP_ITERATIONS, 0 = no limit).
 void Interp::count_iteration(long &iterations, const std::string &name)
 {
     INTERP_FRAME();
-    if (++iterations > LOOP_LIMIT)
+    long limit = s_.settings.loop_limit, total = s_.settings.total_loop_limit;
+    if (++iterations > limit && limit > 0)
         throw InterpError(std::to_string(s_.sequence_number) + ": loop o" + name +
-                          " ran more than " + std::to_string(LOOP_LIMIT) + " iterations");
-    if (++total_iterations_ > TOTAL_LOOP_LIMIT)
+                          " ran more than " + std::to_string(limit) + " iterations");
+    if (++total_iterations_ > total && total > 0)
         throw InterpError(std::to_string(s_.sequence_number) + ": loop o" + name +
-                          " ran more than " + std::to_string(TOTAL_LOOP_LIMIT) +
+                          " ran more than " + std::to_string(total) +
                           " iterations of all loops in this program");
 }

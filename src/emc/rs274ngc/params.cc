@@ -1,4 +1,4 @@
-// params.cc: numbered and named parameters: reading, scoping and write protection (gcode.md §6).
+// params.cc: numbered and named parameters: reading, scoping and write protection (LinuxCNC's parameter rules).
 #include <cmath>
 
 #include "interp.hh"
@@ -65,6 +65,8 @@ void Interp::check_named_writable(const std::string &name) const
 {
     INTERP_FRAME();
     double v;
+    if (py_named_.count(name))
+        throw InterpError("Cannot assign to read-only parameter #<" + name + ">");
     if (name[0] == '_' && const_cast<Interp *>(this)->predefined(name, v))
         throw InterpError("Cannot assign to read-only parameter #<" + name + ">");
     if (name.compare(0, 5, "_ini[") == 0 || name.compare(0, 5, "_hal[") == 0)

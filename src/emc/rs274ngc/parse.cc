@@ -1,5 +1,7 @@
-// parse.cc: turns one source line into an evaluated Block (gcode.md §1, §2).
+// parse.cc: turns one source line into an evaluated Block (LinuxCNC's line syntax and modal groups).
+#include <algorithm>
 #include <cctype>
+#include <iterator>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -65,16 +67,19 @@ int g_group(int g)
 // modal group of an M code, -1 if unknown
 int m_group(int m)
 {
+    static const struct { int group; int codes[9]; } table[] = {
+        {MG_STOP, {0, 1, 2, 30, 60, 99, -1}},
+        {MG_IO, {62, 63, 64, 65, 66, 67, 68, -1}},
+        {MG_TOOL, {6, 61, -1}},
+        {MG_SPINDLE, {3, 4, 5, 19, 70, 71, 72, 73, -1}},
+        {MG_COOLANT, {7, 8, 9, -1}},
+        {MG_OVERRIDE, {48, 49, 50, 51, 52, 53, -1}},
+    };
     if (m >= 100 && m <= 199) return MG_USER;
-    switch (m) {
-    case 0: case 1: case 2: case 30: case 60: case 99: return MG_STOP;
-    case 62: case 63: case 64: case 65: case 66: case 67: case 68: return MG_IO;
-    case 6: case 61: return MG_TOOL;
-    case 3: case 4: case 5: case 19: case 70: case 71: case 72: case 73: return MG_SPINDLE;
-    case 7: case 8: case 9: return MG_COOLANT;
-    case 48: case 49: case 50: case 51: case 52: case 53: return MG_OVERRIDE;
-    default: return -1;
-    }
+    for (const auto &row : table)
+        for (int i = 0; row.codes[i] != -1; i++)
+            if (row.codes[i] == m) return row.group;
+    return -1;
 }
 
 // integer within 0.0001 of v, else error
@@ -107,6 +112,7 @@ void Interp::parse_line(const std::string &raw, Block &b)
 {
     INTERP_FRAME();
     std::string t = normalize(raw);
+    b.py_code = semicolon_python(raw);
     size_t pos = 0;
     if (pos < t.size() && t[pos] == '/') {
         b.block_delete = true;
@@ -181,33 +187,59 @@ void Interp::parse_assignment(const std::string &t, size_t &pos, Block &b)
     }
 }
 
+// Where word c of a block is stored: its presence flag and value.
+static void word_slot(Block &b, char c, bool *&have, double *&value)
+{
+    if (c == '@') { have = &b.has_polar_radius; value = &b.polar_radius; return; }
+    if (c == '^') { have = &b.has_polar_angle; value = &b.polar_angle; return; }
+    if (c == '$') { have = &b.has_dollar; value = &b.dollar; return; }
+    have = &b.has[c - 'a'];
+    value = &b.val[c - 'a'];
+}
+
+// true for the letters (and @ ^ $) that form words other than G, M, N and O
+static bool word_letter(char c)
+{
+    if (c == '@' || c == '^' || c == '$') return true;
+    return c >= 'a' && c <= 'z' && !strchr("nouvw", c);
+}
+
+// Range and integer checks of a word's value; returns the value to store.
+static double checked_word(char c, double v)
+{
+    static const struct { char letter; bool integer; const char *negative; } rules[] = {
+        {'$', true, nullptr},
+        {'f', false, "Negative f word used"},
+        {'s', false, "Negative spindle speed used"},
+        {'t', true, "Negative tool id used"},
+        {'l', true, "Negative l word used"},
+        {'h', true, "Negative h word tool length offset used"},
+    };
+    for (const auto &r : rules) {
+        if (r.letter != c) continue;
+        if (r.integer) v = to_int(v);
+        if (r.negative && v < 0) throw InterpError(r.negative);
+    }
+    return v;
+}
+
 // Parse one letter word (or @ ^ $) at pos.
 void Interp::parse_word(char c, const std::string &t, size_t &pos, Block &b)
 {
     INTERP_FRAME();
     if (c == 'g') { parse_g(t, pos, b); return; }
     if (c == 'm') { parse_m(t, pos, b); return; }
-    bool special = c == '@' || c == '^' || c == '$';
-    bool letter = c >= 'a' && c <= 'z' && c != 'n' && c != 'o' && c != 'u' && c != 'v' &&
-                  c != 'w';
-    if (!special && !letter)
+    bool profile_uw = reading_profile_ && (c == 'u' || c == 'w');
+    if (!word_letter(c) && !profile_uw)
         throw InterpError(std::string("Bad character '") + c + "' used");
     pos++;
-    bool &have = c == '@' ? b.has_polar_radius : c == '^' ? b.has_polar_angle
-                 : c == '$' ? b.has_dollar : b.has[c - 'a'];
-    if (have) throw InterpError(std::string("Multiple ") + c + " words on one line");
+    bool *have;
+    double *value;
+    word_slot(b, c, have, value);
+    if (*have) throw InterpError(std::string("Multiple ") + c + " words on one line");
     double v = read_real_value(t, pos);
-    have = true;
-    if (c == '@') { b.polar_radius = v; return; }
-    if (c == '^') { b.polar_angle = v; return; }
-    if (c == '$') { b.dollar = to_int(v); return; }
-    if (c == 'l' || c == 't' || c == 'h') v = to_int(v);
-    if (c == 'f' && v < 0) throw InterpError("Negative f word used");
-    if (c == 's' && v < 0) throw InterpError("Negative spindle speed used");
-    if (c == 't' && v < 0) throw InterpError("Negative tool id used");
-    if (c == 'l' && v < 0) throw InterpError("Negative l word used");
-    if (c == 'h' && v < 0) throw InterpError("Negative h word tool length offset used");
-    b.val[c - 'a'] = v;
+    *have = true;
+    *value = checked_word(c, v);
 }
 
 // Parse a G word and file it in its modal group.
@@ -223,10 +255,7 @@ void Interp::parse_g(const std::string &t, size_t &pos, Block &b)
     int g = (int)code;
     int group = g_group(g);
     auto remap = g_remaps_.find(g);
-    if (remap != g_remaps_.end()) {
-        group = remap->second.group;
-        b.remap_g = g;
-    }
+    if (remap != g_remaps_.end()) group = remap->second.group;
     if (group < 0 || group >= GG_COUNT) throw InterpError("Unknown g code used");
     int &slot = b.g_modes[group];
     if (slot != -1 && group == GG_MOTION && (slot == 800 || g == 800)) {
@@ -246,14 +275,10 @@ void Interp::parse_m(const std::string &t, size_t &pos, Block &b)
     int m = to_int(read_real_value(t, pos));
     if (m < 0) throw InterpError("Negative m code used");
     auto remap = m_remaps_.find(m);
-    if (remap != m_remaps_.end()) {
-        if (b.m_count >= 4) throw InterpError("Too many m codes on line");
-        if (b.remap_m != -1) throw InterpError("Two m codes used from same modal group");
-        b.remap_m = m;
-        b.m_count++;
-        return;
-    }
-    if (m > 199) throw InterpError("M-code greater than 199: M" + std::to_string(m));
+    if (remap != m_remaps_.end() && remap->second.builtin && remap_active(&remap->second))
+        remap = m_remaps_.end();   // inside its own procedure a remapped built-in is the built-in
+    if (m > 199 && remap == m_remaps_.end())
+        throw InterpError("M-code greater than 199: M" + std::to_string(m));
     if (b.m_count >= 4) throw InterpError("Too many m codes on line");
     if (m == 98) {
         if (b.m98) throw InterpError("Two m codes used from same modal group");
@@ -261,7 +286,7 @@ void Interp::parse_m(const std::string &t, size_t &pos, Block &b)
         b.m_count++;
         return;
     }
-    int group = m_group(m);
+    int group = remap != m_remaps_.end() ? remap->second.group : m_group(m);
     if (group < 0) throw InterpError("Unknown m code used: M" + std::to_string(m));
     if (b.m_modes[group] != -1) throw InterpError("Two m codes used from same modal group");
     b.m_modes[group] = m;
@@ -290,8 +315,17 @@ void Interp::parse_oword(const std::string &t, size_t &pos, Block &b)
     }
     b.o_kind = okind(key);
     if (b.o_kind == O_NONE) throw InterpError("Unknown word where unary operation could be");
-    bool takes_expr = b.o_kind == O_IF || b.o_kind == O_ELSEIF || b.o_kind == O_WHILE ||
-                      b.o_kind == O_RETURN || b.o_kind == O_ENDSUB || b.o_kind == O_REPEAT;
+    parse_o_args(t, pos, b);
+}
+
+// The bracketed arguments (call) or condition/value (if, while, return, ...) of an O-word,
+// and comments between them.
+void Interp::parse_o_args(const std::string &t, size_t &pos, Block &b)
+{
+    INTERP_FRAME();
+    static const OKind with_value[] = {O_IF, O_ELSEIF, O_WHILE, O_RETURN, O_ENDSUB, O_REPEAT};
+    bool takes_value = std::find(std::begin(with_value), std::end(with_value), b.o_kind) !=
+                       std::end(with_value);
     while (pos < t.size() && (t[pos] == '[' || t[pos] == '(')) {
         if (t[pos] == '(') {
             size_t end = t.find(')', pos);
@@ -304,11 +338,23 @@ void Interp::parse_oword(const std::string &t, size_t &pos, Block &b)
         if (b.o_kind == O_CALL) {
             if (b.o_args.size() >= 30) throw InterpError("Too many arguments to subroutine call");
             b.o_args.push_back(v);
-        } else if (takes_expr && !b.o_has_expr) {
+        } else if (takes_value && !b.o_has_expr) {
             b.o_has_expr = true;
             b.o_value = v;
         } else {
             throw InterpError("Unexpected character after O-word");
         }
     }
+}
+
+// Modal group of a built-in G code x10, -1 when it is not one (REMAP= refuses built-in codes).
+int Interp::builtin_g_group(int g)
+{
+    return g_group(g);
+}
+
+// Modal group of a built-in M code, -1 when it is not one.
+int Interp::builtin_m_group(int m)
+{
+    return m == 98 ? MG_STOP : m_group(m);
 }

@@ -82,12 +82,22 @@ std::string upper(std::string v)
 bool Interp::predefined(const std::string &name, double &v)
 {
     INTERP_FRAME();
+    if (python_named(name, v)) return true;
     for (const Predef &p : PREDEFS) {
         if (name == p.name) {
             v = p.fn(s_);
             return true;
         }
     }
+    if (predefined_position(name, v) || interp_value(name, v)) return true;
+    if (name.compare(0, 5, "_hal[") == 0) return hal_value(name, v);
+    if (name.compare(0, 5, "_ini[") == 0) return ini_value(name, v);
+    return false;
+}
+
+// #<_x> .. #<_w> (current position) and #<_abs_x> .. #<_abs_w> (machine position).
+bool Interp::predefined_position(const std::string &name, double &v) const
+{
     static const char axes[] = "xyzabcuvw";
     if (name.size() == 2 && strchr(axes, name[1])) {
         v = s_.current[strchr(axes, name[1]) - axes];
@@ -97,27 +107,41 @@ bool Interp::predefined(const std::string &name, double &v)
         v = program_to_machine_pose(s_.current)[strchr(axes, name[5]) - axes];
         return true;
     }
-    if (name == "_task") { v = task_ ? 1 : 0; return true; }
-    if (name == "_remap_level") { v = remap_level_; return true; }
-    if (name == "_value") { v = value_; return true; }
-    if (name == "_value_returned") { v = value_returned_; return true; }
-    if (name.compare(0, 5, "_hal[") == 0) return hal_value(name, v);
-    if (name.compare(0, 5, "_ini[") == 0 && s_.settings.ini_vars && !ini_path_.empty()) {
-        auto it = ini_cache_.find(name);
-        if (it != ini_cache_.end()) { v = it->second; return true; }
-        size_t close = name.find(']');
-        if (close == std::string::npos) return false;
-        IniFile ini(ini_path_);
-        if (!ini.IsOpen()) return false;
-        auto text = ini.Find(upper(name.substr(close + 1)), upper(name.substr(5, close - 5)));
-        if (!text) return false;
-        char *end = nullptr;
-        v = strtod(text->c_str(), &end);
-        if (end == text->c_str()) return false;
-        ini_cache_[name] = v;
+    return false;
+}
+
+// Predefined values the interpreter (not the state) holds: _task, _remap_level, _value...
+bool Interp::interp_value(const std::string &name, double &v) const
+{
+    const struct { const char *name; double value; } values[] = {
+        {"_task", task_ ? 1.0 : 0.0}, {"_remap_level", (double)remap_stack_.size()},
+        {"_value", value_}, {"_value_returned", value_returned_},
+    };
+    for (const auto &e : values) {
+        if (name != e.name) continue;
+        v = e.value;
         return true;
     }
     return false;
+}
+
+// #<_ini[section]key>: the INI value as a number (cached), when INI_VARS is on.
+bool Interp::ini_value(const std::string &name, double &v)
+{
+    if (!s_.settings.ini_vars || ini_path_.empty()) return false;
+    auto it = ini_cache_.find(name);
+    if (it != ini_cache_.end()) { v = it->second; return true; }
+    size_t close = name.find(']');
+    if (close == std::string::npos) return false;
+    IniFile ini(ini_path_);
+    if (!ini.IsOpen()) return false;
+    auto text = ini.Find(upper(name.substr(close + 1)), upper(name.substr(5, close - 5)));
+    if (!text) return false;
+    char *end = nullptr;
+    v = strtod(text->c_str(), &end);
+    if (end == text->c_str()) return false;
+    ini_cache_[name] = v;
+    return true;
 }
 
 // #<_hal[name]>: sampled from the HAL reader when HAL_PIN_VARS is on; otherwise not defined.
@@ -127,4 +151,17 @@ bool Interp::hal_value(const std::string &name, double &v)
     size_t close = name.find(']');
     if (close != name.size() - 1 || !s_.settings.hal_pin_vars || !hal_reader_) return false;
     return hal_reader_(name.substr(5, close - 5), v);
+}
+
+// Names of the built-in predefined parameters (for Python's params.globals()).
+std::vector<std::string> Interp::predefined_names()
+{
+    std::vector<std::string> names;
+    for (const Predef &p : PREDEFS) names.push_back(p.name);
+    for (const char *axis = "xyzabcuvw"; *axis; axis++) {
+        names.push_back(std::string("_") + *axis);
+        names.push_back(std::string("_abs_") + *axis);
+    }
+    for (const char *n : {"_task", "_remap_level", "_value", "_value_returned"}) names.push_back(n);
+    return names;
 }

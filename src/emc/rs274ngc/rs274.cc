@@ -1,4 +1,4 @@
-// rs274.cc: the standalone interpreter program: runs a G-code file and prints canon calls (canon.md §3).
+// rs274.cc: the standalone interpreter program: runs a G-code file and prints canon calls (LinuxCNC rs274's output).
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -24,10 +24,10 @@ struct Options {
     bool block_delete = false, go = false, task = false, stack = false;
 };
 
-// print usage and exit 1
-[[noreturn]] void usage(const char *prog)
+// print usage and exit (status 1 after a usage error, 0 for --help on stdout)
+[[noreturn]] void usage(const char *prog, int status = 1)
 {
-    fprintf(stderr,
+    fprintf(status ? stderr : stdout,
             "Usage: %s [-p interp.so] [-t tool.tbl] [-v var-file.var] [-n 0|1|2]\n"
             "          [-b] [-s] [-g] [-i ini-file] [-T] [-l log_level] [input file [output file]]\n"
             "\n"
@@ -45,7 +45,7 @@ struct Options {
             "    -T: call task_init()\n"
             "    -l: specify the log_level (default: -1)\n",
             prog);
-    exit(1);
+    exit(status);
 }
 
 // directory of this executable's parent (the build tree root)
@@ -60,32 +60,34 @@ std::string tree_root()
     return p.substr(0, p.rfind('/'));
 }
 
+// apply one command-line option (with optarg); false for a bad option or value
+bool option(int c, Options &o, std::vector<CanonTool> &tools)
+{
+    std::string err;
+    bool *toggle = c == 'b' ? &o.block_delete : c == 's' ? &o.stack : c == 'g' ? &o.go : nullptr;
+    if (toggle) {
+        *toggle = !*toggle;
+        return true;
+    }
+    if (c == 'p') o.plugin = optarg;
+    if (c == 'v') o.var_file = optarg;
+    if (c == 'i') o.ini_file = optarg;
+    if (c == 'T') o.task = true;
+    if (c == 't') {
+        o.tool_given = true;
+        if (!load_tool_table(optarg, tools, err)) fprintf(stderr, "%s\n", err.c_str());
+    }
+    if (c == 'n') o.on_error = atoi(optarg);
+    return strchr("ptvnbsgiTl", c) && o.on_error >= 0 && o.on_error <= 2;
+}
+
 // parse the command line; tool tables are read here (as LinuxCNC's rs274 does)
 void parse_options(int argc, char **argv, Options &o, std::vector<CanonTool> &tools)
 {
     int c;
-    while ((c = getopt(argc, argv, "p:t:v:n:bsgi:Tl:")) != -1) {
-        std::string err;
-        switch (c) {
-        case 'p': o.plugin = optarg; break;
-        case 't':
-            o.tool_given = true;
-            if (!load_tool_table(optarg, tools, err)) fprintf(stderr, "%s\n", err.c_str());
-            break;
-        case 'v': o.var_file = optarg; break;
-        case 'n':
-            o.on_error = atoi(optarg);
-            if (o.on_error < 0 || o.on_error > 2) usage(argv[0]);
-            break;
-        case 'b': o.block_delete = !o.block_delete; break;
-        case 's': o.stack = !o.stack; break;
-        case 'g': o.go = !o.go; break;
-        case 'i': o.ini_file = optarg; break;
-        case 'T': o.task = true; break;
-        case 'l': break;
-        default: usage(argv[0]);
-        }
-    }
+    if (argc > 1 && (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0)) usage(argv[0], 0);
+    while ((c = getopt(argc, argv, "p:t:v:n:bsgi:Tl:")) != -1)
+        if (!option(c, o, tools)) usage(argv[0]);
     int rest = argc - optind;
     if (rest > 2) usage(argv[0]);
     if (rest >= 1) o.input = argv[optind];

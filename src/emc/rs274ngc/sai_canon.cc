@@ -1,4 +1,4 @@
-// sai_canon.cc: printed canon calls of the standalone interpreter, in canon.md §3's exact formats.
+// sai_canon.cc: printed canon calls of the standalone interpreter, in LinuxCNC rs274's exact formats.
 #include "sai_canon.hh"
 
 #include <cmath>
@@ -339,6 +339,7 @@ void SaiCanon::set_aux_output_value(int n, double v) { emitf("SET_AUX_OUTPUT_VAL
 void SaiCanon::comment(const std::string &t) { emitf("COMMENT(\"%s\")", t.c_str()); }
 // Print the MESSAGE call.
 void SaiCanon::message(const std::string &t) { emitf("MESSAGE(\"%s\")", t.c_str()); }
+void SaiCanon::canon_error(const std::string &t) { emitf("CANON_ERROR(%s)", t.c_str()); }
 // Print the LOG call.
 void SaiCanon::log(const std::string &t) { emitf("LOG(\"%s\")", t.c_str()); }
 // Print the LOGOPEN call.

@@ -1,4 +1,4 @@
-// sai_canon.hh: the standalone interpreter's Canon: prints every call as canon.md §3 describes.
+// sai_canon.hh: the standalone interpreter's Canon: prints every call as LinuxCNC's rs274 does.
 #ifndef OPENEMC_RS274NGC_SAI_CANON_HH
 #define OPENEMC_RS274NGC_SAI_CANON_HH
 
@@ -78,6 +78,7 @@ public:
     int wait_input(int, int, int, double) override { return 0; }
     void comment(const std::string &text) override;
     void message(const std::string &text) override;
+    void canon_error(const std::string &text) override;
     void log(const std::string &text) override;
     void logopen(const std::string &name) override;
     void logappend(const std::string &name) override;

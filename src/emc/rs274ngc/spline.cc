@@ -1,4 +1,5 @@
-// spline.cc: G5 (cubic) and G5.1 (quadratic) splines and G5.2/G5.3 NURBS blocks as NURBS_G5_FEED (XY plane).
+// spline.cc: G5 (cubic) and G5.1 (quadratic) splines (XY plane) and G5.2/G5.3 NURBS blocks
+// (XY, XZ or YZ plane) as NURBS_G5_FEED.
 #include <cmath>
 #include <cstdio>
 
@@ -88,25 +89,43 @@ void Interp::move_spline(const Block &b, int mode)
     spline_continues_ = true;
 }
 
-// G5.2 line: the first opens a block (current point = first control point, L = order), each adds
-// its X Y as a control point with weight P (default 1).
-void Interp::nurbs_point(const Block &b)
+// G5.2/G5.3 checks: comp off, a G17/G18/G19 plane, only its two axes move, a feed.
+void Interp::check_nurbs(const Block &b, int first, int second)
 {
     INTERP_FRAME();
-    check_spline(b);
+    if (s_.comp_side != CANON_SIDE_OFF)
+        throw InterpError("Cannot convert spline with cutter radius compensation");
+    if (s_.plane >= CANON_PLANE_UV) throw InterpError("Splines must be in the XY, XZ or YZ plane");
+    static const char letters[] = "xyzabc";
+    for (int i = 0; i < 6; i++)
+        if (b.word(letters[i]) && i != first && i != second)
+            throw InterpError("Splines may only move the two axes of the selected plane");
+    if (s_.feed_mode == FEED_INVERSE_TIME && !b.word('f'))
+        throw InterpError("F word missing with inverse time arc move");
+    if (s_.feed_mode != FEED_INVERSE_TIME && s_.feed_rate == 0.0)
+        throw InterpError("Cannot make arc with zero feed rate");
+}
+
+// G5.2 line: the first opens a block (L = order); each adds the end point of its words in the
+// selected plane (G17, G18 or G19) as a control point with weight P (default 1).
+void Interp::nurbs_point(const Block &b, int)
+{
+    INTERP_FRAME();
+    int first = s_.plane == CANON_PLANE_YZ ? AX_Y : s_.plane == CANON_PLANE_XZ ? AX_Z : AX_X;
+    int second = s_.plane == CANON_PLANE_XY ? AX_Y : s_.plane == CANON_PLANE_XZ ? AX_X : AX_Z;
+    check_nurbs(b, first, second);
     if (!nurbs_open_) {
         int order = b.word('l') ? clamp_int(b.value('l')) : (int)NURBS_DEFAULT_ORDER;
         if (b.word('l') && (order < 2 || order != b.value('l')))
             throw InterpError("G5.2 order L must be an integer of at least 2");
         nurbs_.clear();
-        nurbs_.push_back({s_.current[AX_X], s_.current[AX_Y], 1.0});
         nurbs_order_ = (unsigned)order;
         nurbs_open_ = true;
     }
     double weight = b.word('p') ? b.value('p') : 1.0;
     if (!(weight > 0)) throw InterpError("G5.2 weight P must be greater than zero");
     Pose end = find_end(b);
-    nurbs_.push_back({end[AX_X], end[AX_Y], weight});
+    nurbs_.push_back({end[first], end[second], weight});
     s_.current = end;
 }
 
@@ -115,8 +134,9 @@ void Interp::nurbs_close(const Block &b)
 {
     INTERP_FRAME();
     if (!nurbs_open_) throw InterpError("G5.3 without an open G5.2 block");
-    if (b.word('x') || b.word('y') || has_other_axis(b))
-        throw InterpError("Cannot use axis values with G5.3");
+    static const char letters[] = "xyzabc";
+    for (char c : letters)
+        if (c && b.word(c)) throw InterpError("Cannot use axis values with G5.3");
     nurbs_open_ = false;
     if (nurbs_.size() < nurbs_order_)
         throw InterpError("You must specify a number of control points at least equal to the "

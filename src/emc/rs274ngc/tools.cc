@@ -1,4 +1,4 @@
-// tools.cc: T, M6, M61, G10 L0/L1/L10/L11 and tool-table lookups (gcode.md §13).
+// tools.cc: T, M6, M61, G10 L0/L1/L10/L11 and tool-table lookups (LinuxCNC's tool rules).
 #include <cmath>
 
 #include "interp.hh"
@@ -56,6 +56,7 @@ bool Interp::do_tool_change(Block &b)
     out().change_tool();
     int index = s_.selected_pocket;
     if (index > 0 && index < (int)s_.tools.size()) s_.tools[0] = s_.tools[index];
+    if (index == 0) load_empty_spindle();
     s_.current_pocket = index;
     if (s_.settings.retain_g43 && s_.tlo_code == 430) reapply_tool_length();
     return true;
@@ -72,14 +73,25 @@ void Interp::set_tool_number(const Block &b)
         throw InterpError("Requested tool " + std::to_string(q) + " not found in the tool table");
     out().change_tool_number(index);
     s_.current_pocket = index;
-    s_.tools[0].toolno = q;
+    // the spindle slot takes the tool's whole entry (G43 without H and #5400-#5413 use it);
+    // M61 Q0 empties it
+    if (index > 0) s_.tools[0] = s_.tools[index];
+    else load_empty_spindle();
+}
+
+// T0 M6 or M61 Q0: the spindle holds no tool (number 0, no offsets).
+void Interp::load_empty_spindle()
+{
+    CanonTool none;
+    none.toolno = 0;
+    s_.tools[0] = none;
 }
 
 // Spindle stop, quill-up move and G30 move that the INI settings ask for before an M6.
 void Interp::tool_change_moves()
 {
     if (!s_.settings.tool_change_with_spindle_on) {
-        for (int sp = 0; sp < SPINDLE_COUNT; sp++) {
+        for (int sp = 0; sp < s_.num_spindles; sp++) {
             out().stop_spindle_turning(sp);
             s_.spindle_dir[sp] = CANON_STOPPED;
         }
@@ -116,39 +128,79 @@ void Interp::reapply_tool_length()
     if (s_.selected_tool != 0) out().use_tool_length_offset(to_canon_pose(tlo));
 }
 
-// G10 L0, L1, L10, L11: tool table edits.
-void Interp::g10_tool(const Block &b, int l)
+// G10 L0: reload the tool data (only with no tool in the spindle).
+void Interp::g10_reload_tools()
 {
     INTERP_FRAME();
-    if (l == 0) {
-        if (!s_.tools.empty() && s_.tools[0].toolno > 0)
-            throw InterpError("G10 L0 not allowed with loaded tool " +
-                              std::to_string(s_.tools[0].toolno) + "\n");
-        out().reload_tooldata();
-        return;
+    if (!s_.tools.empty() && s_.tools[0].toolno > 0)
+        throw InterpError("G10 L0 not allowed with loaded tool " +
+                          std::to_string(s_.tools[0].toolno) + "\n");
+    out().reload_tooldata();
+}
+
+// Tool entry `t`'s offsets in program units (machine frame).
+Pose Interp::tool_pose(const CanonTool &t) const
+{
+    double k = s_.machine_to_program();
+    const CanonPose &o = t.offset;
+    return Pose{o.x * k, o.y * k, o.z * k, o.a, o.b, o.c, o.u * k, o.v * k, o.w * k};
+}
+
+// The new offsets of G10 L1 (given values), L10 (current point reads the values) or L11
+// (current point reads the values in G59.3 without G52/G92), program units.
+Pose Interp::g10_tool_offsets(const Block &b, int l, const CanonTool &t) const
+{
+    Pose old = tool_pose(t);
+    if (l == 1) {
+        for (int i = 0; i < 6; i++)
+            if (b.word(AXES[i])) old[i] = b.value(AXES[i]);
+        return old;
     }
-    if (s_.comp_side != CANON_SIDE_OFF)
-        throw InterpError("Cannot change tool table with cutter radius compensation on");
+    Pose m = program_to_machine_pose(s_.current);
+    double k = s_.machine_to_program();
+    const int base = l == 10 ? 5201 + 20 * s_.origin_index : 5381;
+    Pose q;
+    for (int i = 0; i < AX_COUNT; i++)
+        q[i] = m[i] - s_.params[base + i] * ((i >= AX_A && i <= AX_C) ? 1.0 : k);
+    Pose shift = l == 10 ? s_.axis_offset : Pose{};
+    return offsets_for_point(b, q, shift, old, s_.params[base + 9]);
+}
+
+// The tool-data index a G10 L1/L10/L11 P word names; L1 must set something.
+int Interp::g10_tool_index(const Block &b, int l) const
+{
     int p = b.word('p') ? clamp_int(b.value('p')) : 0;
     int index = p > 0 ? find_tool_index(p) : -1;
     if (index < 0) throw InterpError("P value out of range with G10 L" + std::to_string(l));
     bool any = b.word('r') || b.word('i') || b.word('j') || b.word('q');
     for (int i = 0; i < 6; i++) any = any || b.word(AXES[i]);
     if (!any && l == 1) throw InterpError("G10 L1 without offsets has no effect");
+    return index;
+}
+
+// G10 L0, L1, L10, L11: tool table edits.
+void Interp::g10_tool(const Block &b, int l)
+{
+    INTERP_FRAME();
+    if (l == 0) return g10_reload_tools();
+    if (s_.comp_side != CANON_SIDE_OFF)
+        throw InterpError("Cannot change tool table with cutter radius compensation on");
+    int index = g10_tool_index(b, l);
     CanonTool t = s_.tools[index];
+    Pose offs = g10_tool_offsets(b, l, t);
     double k = s_.machine_to_program();
-    Pose m = program_to_machine_pose(s_.current);
-    for (int i = 0; i < 6; i++) {
-        if (!b.word(AXES[i])) continue;
-        double v = b.value(AXES[i]);
-        if (l == 10) v = s_.current[i] + s_.tool_offset[i] - v;
-        if (l == 11) v = m[i] - s_.params[5381 + i] * (i >= AX_A ? 1.0 : k) - v;
-        pose_set(t.offset, i, i >= AX_A ? v : v / k);
-    }
+    for (int i = 0; i < AX_COUNT; i++)
+        pose_set(t.offset, i, (i >= AX_A && i <= AX_C) ? offs[i] : offs[i] / k);
     if (b.word('r')) t.diameter = 2.0 * b.value('r') / k;
     if (b.word('i')) t.frontangle = b.value('i');
     if (b.word('j')) t.backangle = b.value('j');
     if (b.word('q')) t.orientation = clamp_int(b.value('q'));
+    store_tool_entry(index, t);
+}
+
+// Store an edited tool entry and emit it (again for index 0 when it is the loaded tool).
+void Interp::store_tool_entry(int index, const CanonTool &t)
+{
     s_.tools[index] = t;
     out().set_tool_table_entry(index, t);
     if (index == s_.current_pocket && !s_.settings.random_toolchanger) {

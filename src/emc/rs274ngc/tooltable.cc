@@ -1,8 +1,10 @@
-// tooltable.cc: reads a LinuxCNC tool table file (canon.md §3 "Tool table file format").
+// tooltable.cc: reads a LinuxCNC tool table file (LinuxCNC's tool table format).
 #include "tooltable.hh"
 
 #include <cctype>
 #include <cerrno>
+#include <cmath>
+#include <string>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -14,7 +16,7 @@ bool tool_word(CanonTool &t, char letter, const char *text)
 {
     char *end;
     double v = strtod(text, &end);
-    if (end == text || *end != '\0') return false;
+    if (end == text || *end != '\0' || !std::isfinite(v)) return false;
     double *axes[] = {&t.offset.x, &t.offset.y, &t.offset.z, &t.offset.a, &t.offset.b,
                       &t.offset.c, &t.offset.u, &t.offset.v, &t.offset.w};
     const char *axis_letters = "XYZABCUVW";
@@ -31,9 +33,24 @@ bool tool_word(CanonTool &t, char letter, const char *text)
     }
 }
 
+// parse one line (comment after ';') into t; false when a word is not a tool table word.
+// A line without words leaves t.toolno at -1.
+bool tool_line(const char *text, CanonTool &t)
+{
+    std::string copy = text;
+    size_t semi = copy.find(';');
+    if (semi != std::string::npos) copy.erase(semi);
+    char *save = nullptr;
+    for (char *w = strtok_r(&copy[0], " \t", &save); w; w = strtok_r(nullptr, " \t", &save))
+        if (!tool_word(t, (char)toupper((unsigned char)w[0]), w + 1)) return false;
+    return true;
+}
+
 } // namespace
 
-// Load path into tools (index 0 = spindle kept, tools appended in load order).
+// Load path into tools (index 0 = spindle kept, tools appended in load order); a line with
+// a word that is not a tool table word (or a value that is not a finite number) is skipped
+// with LinuxCNC's "Unrecognized line skipped" warning.
 bool load_tool_table(const std::string &path, std::vector<CanonTool> &tools, std::string &error)
 {
     FILE *f = fopen(path.c_str(), "r");
@@ -47,19 +64,13 @@ bool load_tool_table(const std::string &path, std::vector<CanonTool> &tools, std
     int lineno = 0;
     while (fgets(line, sizeof line, f)) {
         lineno++;
-        char *semi = strchr(line, ';');
-        if (semi) *semi = 0;
+        line[strcspn(line, "\r\n")] = 0;
         CanonTool t;
-        bool any = false;
-        for (char *w = strtok(line, " \t\r\n"); w; w = strtok(nullptr, " \t\r\n")) {
-            char letter = (char)toupper((unsigned char)w[0]);
-            if (!tool_word(t, letter, w + 1)) {
-                fprintf(stderr, "%s:%d: bad tool table word '%s'\n", path.c_str(), lineno, w);
-                continue;
-            }
-            any = true;
+        if (!tool_line(line, t)) {
+            fprintf(stderr, "%s:%d: Unrecognized line skipped: %s\n", path.c_str(), lineno, line);
+            continue;
         }
-        if (any && t.toolno >= 0) tools.push_back(t);
+        if (t.toolno >= 0) tools.push_back(t);
     }
     fclose(f);
     return true;

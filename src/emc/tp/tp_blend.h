@@ -32,5 +32,7 @@ int tp_blend_build(tp_geo_t *out, const tp_corner_t *c, const tp_blend_spec_t *s
 /* Distance from the corner point to the blend, and largest distance from the blend to the path. */
 void tp_blend_deviation(const tp_geo_t *blend, const tp_corner_t *c, const tp_blend_spec_t *spec,
                         double *vertex_miss, double *path_dev);
+/* The larger of the vertex miss and the path deviation (cheaper where the geometry allows). */
+double tp_blend_worst(const tp_geo_t *blend, const tp_corner_t *c, const tp_blend_spec_t *spec, double tol);
 
 #endif

@@ -4,7 +4,7 @@
 
 /* Derivative bounds below this count as zero. */
 #define TP_CAPS_TINY 1e-12
-#define TP_CAPS_ITER 48
+#define TP_CAPS_ITER 26
 
 /* Largest x with k x <= limit over the limited axes that move (INFINITY if none). */
 static double ratio_min(const double *lim, const double *k)
@@ -87,7 +87,12 @@ void tp_caps_compute(const tp_bounds_t *b, const tp_axlim_t *l, double v_need, i
     if (!isfinite(v_hi))
         v_hi = 1e9;
     double v = v_hi;
-    if (usable_acc(b, l, v_hi, with_jerk, j_keep) < a_keep) {
+    if (!with_jerk) {
+        /* closed form: |d1| a_keep + |d2| v^2 <= A on every axis */
+        for (int i = 0; i < TP_NBOUND; i++)
+            if (l->acc[i] > 0.0 && b->d2[i] > TP_CAPS_TINY)
+                v = fmin(v, sqrt(fmax(0.0, l->acc[i] - a_keep * b->d1[i]) / b->d2[i]));
+    } else if (usable_acc(b, l, v_hi, with_jerk, j_keep) < a_keep) {
         double lo = 0.0, hi = v_hi;
         for (int k = 0; k < TP_CAPS_ITER; k++) {
             double mid = 0.5 * (lo + hi);

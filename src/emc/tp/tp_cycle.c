@@ -68,7 +68,7 @@ static void track_segments(tp_planner_t *tp, const tp_cycle_in_t *in, tp_cycle_o
         tp->seg_done = owner;
     const tp_region_t *last = tp->reg_head > 0 ? tp_reg_at(tp, tp->reg_head - 1) : NULL;
     int at_end = last && tp->ex.s >= last->s0 + last->len && tp->ex.v <= 0.0;
-    int all_emitted = tp->seg_head == 0 || tp_seg_at(tp, tp->seg_head - 1)->s_end <= tp->s_emit;
+    int all_emitted = !(tp->prov.valid && tp->prov.lazy);
     if (at_end && all_emitted && tp->ex.tap == TP_TAP_NONE && !tp->ex.waiting &&
         !tp_sync_end_hold(tp, in))
         tp->seg_done = tp->seg_head;
@@ -99,9 +99,9 @@ static void report(tp_planner_t *tp, tp_cycle_out_t *out, double fs, double rs)
     out->current_vel = tp->ex.tap != TP_TAP_NONE ? fabs(tp->ex.tap_v) : tp->ex.v;
     out->queue_depth = tp_queue_live(tp);
     out->queue_full = out->queue_depth >= tp->queue_size;
-    out->done = out->queue_depth == 0 && tp->ex.v <= 0.0;
+    out->done = out->queue_depth == 0 && tp->ex.v <= 0.0 && tp->ex.dir > 0 && !tp->reverse_req;
     out->paused = tp->paused && tp->ex.v <= 0.0;
-    out->reverse = tp->reverse_req;
+    out->reverse = tp->ex.dir < 0;
     out->rigid_tap_state = tp->ex.tap;
     out->unlock_joint = tp->ex.unlock_joint;
     for (int k = 0; k < TP_MAX_SPINDLES; k++)
@@ -110,16 +110,47 @@ static void report(tp_planner_t *tp, tp_cycle_out_t *out, double fs, double rs)
     out->spindle_sync_waiting = tp->ex.waiting;
     if (!s)
         return;
-    tp_vec_t end = s->geo.kind == TP_GEO_ARC ? s->geo.u.arc.end : s->geo.u.line.end;
+    tp_vec_t end = tp_vec_from_pose(&s->in.end);
     tp_vec_t dtg = tp_vec_sub(&end, &tp->pos);
     out->dtg = tp_vec_to_pose(&dtg);
-    out->distance_to_go = fmax(0.0, s->s_end - tp->ex.s) + (s->finalized ? s->cut_out : 0.0);
+    out->distance_to_go = fmax(0.0, s->s_end - tp->ex.s);
     out->requested_vel = fmin(s->in.vel, s->in.ini_maxvel > 0.0 ? s->in.ini_maxvel : s->in.vel);
     out->net_feed_scale = s->in.motion_type == TP_MOTION_TRAVERSE ? rs : fs;
     out->motion_type = s->in.motion_type;
     out->exec_id = s->in.id;
     out->exec_tag = s->in.tag;
     out->active_depth = tp_elem_at(tp, tp->ex.elem)->is_blend ? 2 : 1;
+}
+
+/* One cycle of motion in the executor's direction; a change of direction waits until at rest. */
+static void move(tp_planner_t *tp, const tp_cycle_in_t *in, const tp_seg_t *s, double fs, double rs)
+{
+    tp_window_t w;
+    int want = tp_rev_wanted(tp, in, s);
+    double sp = tp_sync_spindle_rps(tp, in);
+    if (want != tp->ex.dir && tp->ex.v <= 0.0) {
+        tp->ex.dir = want;
+        tp->ex.a = 0.0;
+        tp->ex.window_end = 0.0;
+        tp->prev.valid = 0;
+    }
+    tp_window_build(tp, &w, fs, rs, sp, tp->ex.dir);
+    if (want != tp->ex.dir) {
+        for (int k = 0; k < w.nr; k++)
+            w.r[k].v = 0.0;             /* come to rest before turning round */
+    } else if (tp->ex.dir > 0) {
+        tp_window_settle(tp, &w, fs, rs, sp);
+        tp_sync_adjust(tp, in, &w);
+    }
+    if (tp->ex.dir > 0) {
+        tp_exec_move(tp, &w, tp->lim.cycle_time);
+        tp_exec_locate(tp);
+        return;
+    }
+    tp->ex.s = -tp->ex.s;
+    tp_exec_move(tp, &w, tp->lim.cycle_time);
+    tp->ex.s = -tp->ex.s;
+    tp_rev_locate(tp);
 }
 
 /* Finish an abort once at rest: drop the queue where the machine stands. */
@@ -139,18 +170,13 @@ tp_result_t tp_cycle_run(tp_planner_t *tp, const tp_cycle_in_t *in, tp_cycle_out
     memset(out, 0, sizeof(*out));
     tp_seg_t *s = current_seg(tp);
     net_scales(tp, in, s, &fs, &rs);
-    if (tp->seg_done < tp->seg_head && tp->reg_head > tp->reg_tail) {
-        if (tp->ex.tap != TP_TAP_NONE) {
+    tp_jct_provisional_due(tp, 0);
+    if (tp->reg_head > tp->reg_tail && (tp->seg_done < tp->seg_head || tp->ex.dir < 0 ||
+                                        tp_rev_wanted(tp, in, s) < 0)) {
+        if (tp->ex.tap != TP_TAP_NONE)
             tp_sync_tap_cycle(tp, in, out);
-        } else if (!hold_at_stop(tp, in, out)) {
-            tp_window_t w;
-            double sp = tp_sync_spindle_rps(tp, in);
-            tp_window_build(tp, &w, fs, rs, sp);
-            tp_window_settle(tp, &w, fs, rs, sp);
-            tp_sync_adjust(tp, in, &w);
-            tp_exec_move(tp, &w, tp->lim.cycle_time);
-            tp_exec_locate(tp);
-        }
+        else if (tp->ex.dir < 0 || !hold_at_stop(tp, in, out))
+            move(tp, in, s, fs, rs);
         track_segments(tp, in, out);
         if (tp->ex.tap == TP_TAP_NONE)
             tp->pos = tp_exec_position(tp);

@@ -7,8 +7,8 @@
 #define TP_CAP_STEPS 64.0
 /* A region aims at 1/TP_REGION_SHARE of the braking distance at its speed. */
 #define TP_REGION_SHARE 24.0
-/* Elements a single add may need (blend halves, body, fallback pieces). */
-#define TP_EMIT_PER_ADD 8
+/* Elements a single add may need (blend halves, body, fallback pieces, a unit's moves). */
+#define TP_EMIT_PER_ADD TP_EMIT_SPACE
 
 /* Round a positive cap down to the step grid (0 and INFINITY unchanged). */
 static double quantize(double x)
@@ -124,10 +124,14 @@ static void piece_region(tp_planner_t *tp, const tp_geo_t *g, double u0, double 
     else if (owner->sync == TP_SYNC_VEL) {
         flags |= TP_REG_SYNC_VEL;
         r->sync_k = fabs(owner->sync_k);
-    } else if (owner->in.motion_type == TP_MOTION_TRAVERSE)
-        r->v_rapid = owner->in.vel > 0.0 ? owner->in.vel : INFINITY;
-    else
-        r->v_feed = owner->in.vel;
+    } else {
+        /* a blend's parameter is not exactly its length: keep the feed on the path within 1 % */
+        double stretch = b.d1[TP_PATH_AX] > 1.01 ? b.d1[TP_PATH_AX] : 1.0;
+        if (owner->in.motion_type == TP_MOTION_TRAVERSE)
+            r->v_rapid = owner->in.vel > 0.0 ? owner->in.vel / stretch : INFINITY;
+        else
+            r->v_feed = owner->in.vel / stretch;
+    }
     if (owner->in.kind == TP_SEG_RIGID_TAP)
         flags |= TP_REG_TAP;
     r->flags = flags;
@@ -141,12 +145,27 @@ static void emit_elem(tp_planner_t *tp, tp_seg_t *owner, tp_seg_t *geo_seg, int 
 {
     if (!(u1 - u0 > 0.0) && !(flags & TP_REG_TAP))
         return;
-    if (tp->stop_next)
-        flags |= TP_REG_STOP;
-    tp->stop_next = 0;
     const tp_geo_t *g = is_blend ? &geo_seg->blend : &geo_seg->geo;
     tp_region_t r;
     piece_region(tp, g, u0, u1, lim, owner, flags, &r);
+    tp_emit_region(tp, owner, geo_seg, is_blend, u0, u1, &r);
+}
+
+/* Emit an element [u0, u1] whose caps are already in template r (its position is filled in). */
+void tp_emit_region(tp_planner_t *tp, tp_seg_t *owner, tp_seg_t *geo_seg, int is_blend, double u0,
+                    double u1, const tp_region_t *tmpl)
+{
+    tp_region_t r = *tmpl;
+    if (!(u1 - u0 > 0.0) && !(r.flags & TP_REG_TAP))
+        return;
+    if (tp->stop_next) {
+        r.flags |= TP_REG_STOP;
+        r.v_start = 0.0;
+    }
+    tp->stop_next = 0;
+    r.s0 = tp->s_emit;
+    r.len = u1 - u0;
+    r.seg = owner->serial;
     tp_elem_t *e = tp_elem_at(tp, tp->elem_head);
     e->owner = owner->serial;
     e->geo_seg = geo_seg->serial;
@@ -160,6 +179,13 @@ static void emit_elem(tp_planner_t *tp, tp_seg_t *owner, tp_seg_t *geo_seg, int 
     owner->s_end = tp->s_emit;
 }
 
+/* Caps of part [u0, u1] of a geometry, as a region template for tp_emit_region. */
+void tp_emit_caps(tp_planner_t *tp, tp_seg_t *owner, const tp_geo_t *g, double u0, double u1,
+                  const tp_axlim_t *lim, uint32_t flags, tp_region_t *r)
+{
+    piece_region(tp, g, u0, u1, lim, owner, flags, r);
+}
+
 /* Emit part [u0, u1] of a segment's own move. */
 void tp_emit_piece(tp_planner_t *tp, tp_seg_t *owner, tp_seg_t *geo_seg, int is_blend, double u0,
                    double u1, uint32_t flags)
@@ -167,52 +193,48 @@ void tp_emit_piece(tp_planner_t *tp, tp_seg_t *owner, tp_seg_t *geo_seg, int is_
     emit_elem(tp, owner, geo_seg, is_blend, u0, u1, &owner->lim, flags);
 }
 
-/* Emit the blend stored in a (from a into b): first half owned by a, second by b. */
-void tp_emit_blend(tp_planner_t *tp, tp_seg_t *a, tp_seg_t *b, uint32_t flags)
+/* Emit the blend stored in a (from a into b): first half owned by a_owner, second by b_owner. */
+void tp_emit_blend(tp_planner_t *tp, tp_seg_t *a, tp_seg_t *a_owner, tp_seg_t *b, tp_seg_t *b_owner)
 {
     tp_axlim_t lim;
     double half = 0.5 * a->blend.len;
     lim_min(&lim, &a->lim, &b->lim);
-    emit_elem(tp, a, a, 1, 0.0, half, &lim, flags);
-    emit_elem(tp, b, a, 1, half, a->blend.len, &lim, 0);
+    emit_elem(tp, a_owner, a, 1, 0.0, half, &lim, 0);
+    emit_elem(tp, b_owner, a, 1, half, a->blend.len, &lim, 0);
 }
 
-/* Emit the body of the newest move to its end; tp_emit_truncate shortens it once its end is known. */
-void tp_emit_provisional(tp_planner_t *tp, tp_seg_t *s)
+/* Remember the state before the provisional part. */
+void tp_emit_mark(tp_planner_t *tp)
 {
-    uint64_t regs = tp->reg_head;
-    tp->prov.reg_open_before = tp->reg_open;
-    tp->prov.stop_flag = tp->stop_next ? TP_REG_STOP : 0;
-    tp->prov.elem = tp->elem_head;
-    tp_emit_piece(tp, s, s, 0, s->cut_in, s->geo.len, 0);
-    tp->prov.valid = tp->elem_head > tp->prov.elem;
-    tp->prov.new_region = tp->reg_head > regs;
+    tp->prov.valid = 1;
+    tp->prov.lazy = 0;
+    tp->prov.elem_head = tp->elem_head;
+    tp->prov.reg_head = tp->reg_head;
+    if (tp->reg_head > tp->reg_tail)
+        tp->prov.last_reg = *tp_reg_at(tp, tp->reg_head - 1);
+    tp->prov.reg_open = tp->reg_open;
+    tp->prov.stop_next = tp->stop_next;
+    tp->prov.s_emit = tp->s_emit;
 }
 
-/* Cut the last cut units off the provisional body; 0, or -1 when the body is not the path end. */
-int tp_emit_truncate(tp_planner_t *tp, double cut)
+/* Drop the provisional part (the executor has not reached it) so it can be emitted again. */
+void tp_emit_rollback(tp_planner_t *tp)
 {
-    if (!tp->prov.valid || tp->prov.elem + 1 != tp->elem_head)
-        return -1;
-    tp_elem_t *e = tp_elem_at(tp, tp->prov.elem);
-    tp_region_t *r = tp_reg_at(tp, tp->reg_head - 1);
-    if (cut > e->len)
-        cut = e->len;
-    tp->path_version++;
-    e->len -= cut;
-    r->len -= cut;
-    tp->s_emit -= cut;
-    tp_seg_at(tp, e->owner)->s_end = tp->s_emit;
-    if (e->len <= 0.0 && tp->ex.elem < tp->prov.elem) {
-        tp->elem_head--;
-        if (tp->prov.new_region && tp->ex.reg < tp->reg_head - 1) {
-            tp->reg_head--;
-            tp->reg_open = tp->prov.reg_open_before;
-            tp->stop_next = tp->prov.stop_flag ? 1 : tp->stop_next;
-        }
+    if (!tp->prov.valid)
+        return;
+    if (tp->prov.lazy) {                /* never emitted: nothing to take back */
+        tp->prov.valid = tp->prov.lazy = 0;
+        return;
     }
+    tp->elem_head = tp->prov.elem_head;
+    tp->reg_head = tp->prov.reg_head;
+    if (tp->reg_head > tp->reg_tail)
+        *tp_reg_at(tp, tp->reg_head - 1) = tp->prov.last_reg;
+    tp->reg_open = tp->prov.reg_open;
+    tp->stop_next = tp->prov.stop_next;
+    tp->s_emit = tp->prov.s_emit;
     tp->prov.valid = 0;
-    return 0;
+    tp->path_version++;
 }
 
 /* Non-zero when the element and region rings can take another add. */

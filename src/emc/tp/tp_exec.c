@@ -16,7 +16,7 @@
 /* Slack on distances compared for safety: rounding of the closed forms. */
 static double slack(double d)
 {
-    return 1e-10 * (1.0 + fabs(d));
+    return 1e-9 * (1.0 + fabs(d));
 }
 
 /* Distance a positive acceleration needs to settle to zero (jerk-limited). */
@@ -36,17 +36,16 @@ static int momentum_ok(const tp_window_t *w, int k, double s, const tp_state1_t 
 {
     if (st->a <= 0.0 || w->t[k].lim.jerk <= 0.0)
         return 1;
-    tp_lim1_t span = w->t[k].lim;       /* limits from here up to target m */
+    double j = w->t[k].lim.jerk;
     for (int m = k; m + 1 < w->n && m < k + TP_CHECK_TARGETS; m++) {
         const tp_target_t *n = &w->t[m + 1];
-        if (m > k && w->t[m].lim.jerk > 0.0)
-            span.jerk = fmin(span.jerk, w->t[m].lim.jerk);
-        double j = n->lim.jerk > 0.0 ? fmin(span.jerk, n->lim.jerk) : span.jerk;
+        if (n->lim.jerk > 0.0)
+            j = fmin(j, n->lim.jerk);
         double v_over = st->v + st->a * st->a / (2.0 * j);
         if (v_over <= n->v * (1.0 + 1e-10 + loose * 1e-8) + 1e-12)
             continue;
-        if (settle_dist(st, &span) > w->t[m].s - s + loose * slack(w->t[m].s))
-            return 0;
+        /* settle in the stretch before target k, where the acceleration is now */
+        return settle_dist(st, &w->t[k].lim) <= w->t[k].s - s + loose * slack(w->t[k].s);
     }
     return 1;
 }
@@ -134,6 +133,26 @@ static double brake(tp_planner_t *tp, const tp_target_t *t, const tp_lim1_t *lim
     return t_rem;
 }
 
+/* The speed change of a stretch.  Its jerk anticipates the stretches ahead; when that would let the
+ * acceleration already under way overshoot the cap or drive the speed below zero, the stretch's
+ * own (larger) jerk settles it instead. */
+static void go_profile(tp_prof_t *go, double v, double a, const tp_stretch_t *st)
+{
+    tp_prof_velocity(go, v, a, st->v, &st->lim);
+    double j = st->lim.jerk;
+    if (!(j > 0.0) || !(st->jerk_own > j))
+        return;
+    double v_rest = v + a * fabs(a) / (2.0 * j);
+    if ((a > 0.0 && v_rest > st->v * (1.0 + 1e-6)) || (a < 0.0 && v_rest < 0.0)) {
+        tp_lim1_t own = {st->lim.acc, st->jerk_own};
+        tp_prof_t settle;
+        tp_prof_velocity(&settle, v, a, st->v, &own);
+        /* only when it settles (brings the acceleration towards zero first), not to push harder */
+        if (settle.n > 0 && settle.ph[0].j * a < 0.0)
+            *go = settle;
+    }
+}
+
 /* Stretch index after crossing boundaries up to the executor position. */
 static int stretch_at(const tp_window_t *w, int ri, double s)
 {
@@ -155,7 +174,7 @@ static int substep(tp_planner_t *tp, const tp_window_t *w, int *ti, int *ri, dou
         return 1;
     }
     tp_prof_t go;
-    tp_prof_velocity(&go, tp->ex.v, tp->ex.a, st->v, &st->lim);
+    go_profile(&go, tp->ex.v, tp->ex.a, st);
     double tc = tp_prof_time_at(&go, t->s - s_now);
     double tb = *ri + 1 < w->nr ? tp_prof_time_at(&go, w->r[*ri + 1].s - s_now) : INFINITY;
     double hi = fmin(*t_rem, fmin(tc, tb));
@@ -185,6 +204,13 @@ static int substep(tp_planner_t *tp, const tp_window_t *w, int *ti, int *ri, dou
     } else {
         tp->emergencies++;
 #ifdef TP_DEBUG
+        if (getenv("TP_TRACE")) {
+            for (int k = *ti; k < w->n && k < *ti + 3; k++) {
+                const tp_target_t *q = &w->t[k];
+                fprintf(stderr, "  t%d s=%.12g v=%.9g lim %g/%g need=%.9g rem=%.9g mom=%d\n", k, q->s, q->v, q->lim.acc, q->lim.jerk,
+                        tp_brake_dist(tp->ex.v, tp->ex.a, q->v, &q->lim), q->s - tp->ex.s, momentum_ok(w, k, tp->ex.s, &s0, 1.0));
+            }
+        }
         if (getenv("TP_TRACE"))
             fprintf(stderr, "emerg: s=%.12g v=%.12g a=%.6g t s=%.12g v=%.12g lim=%g/%g need=%.12g rem=%.12g\n",
                     tp->ex.s, tp->ex.v, tp->ex.a, t->s, t->v, t->lim.acc, t->lim.jerk,
@@ -192,7 +218,7 @@ static int substep(tp_planner_t *tp, const tp_window_t *w, int *ti, int *ri, dou
 #endif
     }
     int reached;
-    double vt = t->v;
+    double vt = fmin(t->v, st->v);    /* braking never speeds up past the stretch's cap */
     if (tp->ex.a > 0.0 && t->lim.jerk > 0.0) {
         double v_rest = tp->ex.v + tp->ex.a * tp->ex.a / (2.0 * t->lim.jerk);
         vt = fmin(vt, v_rest);          /* settle the acceleration, never speed up while braking */

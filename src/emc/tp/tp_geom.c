@@ -138,16 +138,43 @@ static void bez_diff(const tp_vec_t *c, int n, tp_vec_t *out)
             out[k].x[i] = n * (c[k + 1].x[i] - c[k].x[i]);
 }
 
-/* Point of a quintic at u. */
+/* Power-basis coefficients of a quintic from its control points (for Horner evaluation). */
+static void quintic_power(tp_quintic_t *q)
+{
+    static const double m[6][6] = {{1, 0, 0, 0, 0, 0},      {-5, 5, 0, 0, 0, 0},
+                                   {10, -20, 10, 0, 0, 0},  {-10, 30, -30, 10, 0, 0},
+                                   {5, -20, 30, -20, 5, 0}, {-1, 5, -10, 10, -5, 1}};
+    for (int k = 0; k < 6; k++)
+        for (int i = 0; i < TP_NAX; i++) {
+            double v = 0.0;
+            for (int j = 0; j <= k; j++)
+                v += m[k][j] * q->b[j].x[i];
+            q->c[k].x[i] = v;
+        }
+}
+
+/* Point of a quintic at u (Horner). */
 tp_vec_t tp_quintic_point(const tp_quintic_t *q, double u)
 {
-    double w[6];
+    tp_vec_t r;
     if (u >= 1.0)
         return q->b[5];
     if (u <= 0.0)
         return q->b[0];
-    bernstein(5, u, w);
-    return bez_sum(q->b, w, 5);
+    for (int i = 0; i < TP_NAX; i++)
+        r.x[i] = ((((q->c[5].x[i] * u + q->c[4].x[i]) * u + q->c[3].x[i]) * u + q->c[2].x[i]) * u +
+                  q->c[1].x[i]) * u + q->c[0].x[i];
+    return r;
+}
+
+/* First derivative of a quintic w.r.t. u (Horner). */
+static tp_vec_t quintic_d1(const tp_quintic_t *q, double u)
+{
+    tp_vec_t r;
+    for (int i = 0; i < TP_NAX; i++)
+        r.x[i] = (((5.0 * q->c[5].x[i] * u + 4.0 * q->c[4].x[i]) * u + 3.0 * q->c[3].x[i]) * u +
+                  2.0 * q->c[2].x[i]) * u + q->c[1].x[i];
+    return r;
 }
 
 /* Quintic position and derivatives w.r.t. length (u = s / len). */
@@ -200,15 +227,18 @@ tp_jet_t tp_geo_jet(const tp_geo_t *g, double s)
         s = g->len;
     switch (g->kind) {
     case TP_GEO_ARC:
-        return arc_jet(g, s);
+        j = arc_jet(g, s);
+        break;
     case TP_GEO_QUINTIC:
-        return quintic_jet(g, s);
+        j = quintic_jet(g, s);
+        break;
     default:
-        j.p = tp_geo_eval(g, s);
         j.d1 = g->u.line.dir;
         memset(&j.d2, 0, sizeof(j.d2));
-        return j;
+        break;
     }
+    j.p = tp_geo_eval(g, s);            /* exact end points at both ends */
+    return j;
 }
 
 /* Position at s; the exact end point at (or past) the end. */
@@ -340,14 +370,11 @@ double tp_quintic_length(const tp_quintic_t *q, tp_metric_t m)
                                  0.9602898564975363};
     static const double wg[4] = {0.3626837833783620, 0.3137066458778873, 0.2223810344533745,
                                  0.1012285362903763};
-    tp_vec_t d1[5];
-    double w[5], sum = 0.0;
+    double sum = 0.0;
     int first = tp_metric_first(m);
-    bez_diff(q->b, 5, d1);
     for (int k = 0; k < 8; k++) {
         double u = 0.5 + 0.5 * (k < 4 ? -xg[k] : xg[k - 4]);
-        bernstein(4, u, w);
-        tp_vec_t d = bez_sum(d1, w, 4);
+        tp_vec_t d = quintic_d1(q, u);
         sum += (k < 4 ? wg[k] : wg[k - 4]) * tp_vec_norm3(&d, first);
     }
     return 0.5 * sum;
@@ -365,4 +392,5 @@ void tp_quintic_hermite(tp_quintic_t *q, const tp_jet_t *a, const tp_jet_t *b, d
         q->b[4].x[i] = b->p.x[i] - lam * b->d1.x[i] / 5.0;
         q->b[3].x[i] = b->p.x[i] - 2.0 * lam * b->d1.x[i] / 5.0 + l2 * b->d2.x[i] / 20.0;
     }
+    quintic_power(q);
 }

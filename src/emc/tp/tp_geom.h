@@ -30,9 +30,10 @@ typedef struct tp_arc {
     double h;                   /* displacement along the normal */
 } tp_arc_t;
 
-/* Quintic Bezier blend: u = s / len in [0, 1]. */
+/* Quintic Bezier blend: u = s / len in [0, 1]; c holds the same polynomial in powers of u. */
 typedef struct tp_quintic {
     tp_vec_t b[6];
+    tp_vec_t c[6];
 } tp_quintic_t;
 
 typedef struct tp_geo {

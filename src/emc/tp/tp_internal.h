@@ -34,13 +34,18 @@ typedef enum tp_sync {
 typedef struct tp_seg {
     tp_segment_t in;            /* as added */
     uint64_t serial;
-    tp_geo_t geo;               /* the move */
+    uint64_t unit, unit_last;   /* head (first move) of its unit; in the head: the unit's last move */
+    double own0, own1;          /* the stretch of the unit's geometry this move owns */
+    double unit_dev;            /* head: how far the unit's line strays from its moves' end points */
+    tp_geo_t geo;               /* the move (in a unit's head: the unit's line) */
     tp_geo_t blend;             /* blend into the next move (jct_out == BLEND, once built) */
     tp_axlim_t lim;             /* axis and path limits along this move */
     tp_jct_t jct_in, jct_out;
     tp_term_cond_t term;        /* term condition in force when it was added */
     double tol;                 /* G64 P tolerance in force when it was added */
+    double want_in, want_out;   /* cut the blends at its ends would like */
     double cut_in, cut_out;     /* length taken from its start / end by blends */
+    int tiled;                  /* the two blends meet: nothing straight in between */
     int k_in_set, k_out_set;    /* curvature given at the cut points (tiling) */
     tp_vec_t k_in, k_out;
     int finalized;              /* its elements are emitted */
@@ -83,13 +88,16 @@ typedef struct tp_target {
 } tp_target_t;
 
 #define TP_WINDOW_MAX 64
+/* Ring entries one add may need: blend halves, a body per move of a unit (64), fallback pieces. */
+#define TP_EMIT_SPACE 72
 #define TP_CROSS_MAX 16
 
 /* A region the next cycle may enter: where, its speed cap and the limits while in it. */
 typedef struct tp_stretch {
     double s;
     double v;
-    tp_lim1_t lim;
+    tp_lim1_t lim;              /* anticipating the stretches soon after it */
+    double jerk_own;            /* its own jerk cap (for settling what is already under way) */
 } tp_stretch_t;
 
 /* The lookahead computed at the start of a cycle. */
@@ -115,6 +123,7 @@ typedef struct tp_exec {
     double s, v, a;             /* global position, speed, acceleration along the path */
     uint64_t elem, reg;         /* current element / region */
     double window_end;          /* the lookahead never shrinks below this position */
+    int dir;                    /* +1 forward, -1 reverse run */
     uint64_t cleared_stop;      /* region + 1 whose start stop has been served */
     int waiting;                /* at a stop, waiting for spindle at-speed or index */
     int index_state;            /* 0 idle, 1 armed, 2 waiting for the index */
@@ -168,12 +177,15 @@ struct tp_planner {
     /* queue end */
     tp_vec_t goal;
     double s_emit;              /* global position where the next element starts */
-    struct {                    /* the last move's body, emitted before its end is known */
+    struct {                    /* state before the provisional part (emitted before its end is known) */
         int valid;
-        uint64_t elem;          /* its element */
-        int new_region;         /* it opened its own region */
-        int reg_open_before;    /* whether the region before it was still open */
-        uint32_t stop_flag;     /* TP_REG_STOP it carried */
+        uint64_t elem_head, reg_head;
+        tp_region_t last_reg;
+        int reg_open, stop_next;
+        double s_emit;
+        uint64_t body_elem;     /* the open unit's body, one element for all its moves */
+        int lazy;               /* not emitted yet: the executor is far from the path end */
+        uint64_t lazy_b, lazy_c;/* the units it is made of (lazy_b UINT64_MAX: none) */
     } prov;
     /* execution */
     tp_exec_t ex;
@@ -223,15 +235,32 @@ int tp_queue_live(const tp_planner_t *tp);
 /* tp_emit.c */
 void tp_emit_piece(tp_planner_t *tp, tp_seg_t *owner, tp_seg_t *geo_seg, int is_blend, double u0,
                    double u1, uint32_t flags);
-void tp_emit_blend(tp_planner_t *tp, tp_seg_t *a, tp_seg_t *b, uint32_t flags);
+void tp_emit_blend(tp_planner_t *tp, tp_seg_t *a, tp_seg_t *a_owner, tp_seg_t *b, tp_seg_t *b_owner);
 int tp_emit_space(const tp_planner_t *tp);
-void tp_emit_provisional(tp_planner_t *tp, tp_seg_t *s);
-int tp_emit_truncate(tp_planner_t *tp, double cut);
+void tp_emit_caps(tp_planner_t *tp, tp_seg_t *owner, const tp_geo_t *g, double u0, double u1,
+                  const tp_axlim_t *lim, uint32_t flags, tp_region_t *r);
+void tp_emit_region(tp_planner_t *tp, tp_seg_t *owner, tp_seg_t *geo_seg, int is_blend, double u0,
+                    double u1, const tp_region_t *tmpl);
+void tp_emit_mark(tp_planner_t *tp);
+void tp_emit_rollback(tp_planner_t *tp);
+/* tp_unit.c */
+tp_seg_t *tp_unit_head(tp_planner_t *tp, const tp_seg_t *s);
+tp_seg_t *tp_unit_last(tp_planner_t *tp, const tp_seg_t *h);
+int tp_unit_can_absorb(tp_planner_t *tp, tp_seg_t *h, const tp_seg_t *s);
+void tp_unit_absorb(tp_planner_t *tp, tp_seg_t *h, tp_seg_t *s);
+void tp_unit_emit(tp_planner_t *tp, tp_seg_t *h, double u0, double u1, uint32_t flags);
+void tp_unit_split_body(tp_planner_t *tp, tp_seg_t *h, uint64_t body_elem);
+/* tp_junction.c */
+void tp_jct_plan(tp_planner_t *tp, tp_seg_t *b, tp_seg_t *c);
+void tp_jct_commit(tp_planner_t *tp, tp_seg_t *a, tp_seg_t *b, tp_seg_t *c);
+void tp_jct_provisional(tp_planner_t *tp, tp_seg_t *b, tp_seg_t *c);
+void tp_jct_provisional_due(tp_planner_t *tp, int now);
+int tp_jct_can_stop_before(const tp_planner_t *tp, double s_at);
 /* tp_window.c */
 double tp_region_cap(const tp_planner_t *tp, const tp_region_t *r, double feed_scale,
                      double rapid_scale, double spindle_rps);
 void tp_window_build(tp_planner_t *tp, tp_window_t *w, double feed_scale, double rapid_scale,
-                     double spindle_rps);
+                     double spindle_rps, int dir);
 void tp_window_settle(tp_planner_t *tp, tp_window_t *w, double feed_scale, double rapid_scale,
                       double spindle_rps);
 /* tp_exec.c */
@@ -241,6 +270,9 @@ void tp_exec_locate(tp_planner_t *tp);
 tp_vec_t tp_exec_position(tp_planner_t *tp);
 /* tp_cycle.c */
 tp_result_t tp_cycle_run(tp_planner_t *tp, const tp_cycle_in_t *in, tp_cycle_out_t *out);
+/* tp_reverse.c */
+int tp_rev_wanted(const tp_planner_t *tp, const tp_cycle_in_t *in, const tp_seg_t *s);
+void tp_rev_locate(tp_planner_t *tp);
 /* tp_sync.c */
 double tp_sync_spindle_rps(const tp_planner_t *tp, const tp_cycle_in_t *in);
 int tp_sync_start_wait(tp_planner_t *tp, const tp_cycle_in_t *in, tp_seg_t *s, tp_cycle_out_t *out);

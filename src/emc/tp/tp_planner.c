@@ -11,6 +11,16 @@
 #define TP_ELEMS_PER_SEG 6
 #define TP_AOUTS_PER_SEG 4
 
+/* Touch every page of a block so that the servo cycle never takes a page fault on it. */
+static void prefault(void *mem, size_t bytes)
+{
+    volatile unsigned char *p = mem;
+    for (size_t k = 0; k < bytes; k += 4096)
+        p[k] = 0;
+    if (bytes)
+        p[bytes - 1] = 0;
+}
+
 /* Allocate the rings, fill defaults; NULL on a bad size or no memory. */
 tp_planner_t *tp_planner_create(int queue_size)
 {
@@ -21,8 +31,8 @@ tp_planner_t *tp_planner_create(int queue_size)
     if (!tp)
         return NULL;
     tp->queue_size = queue_size;
-    tp->seg_cap = (uint32_t)queue_size + 4;
-    tp->elem_cap = tp->reg_cap = TP_ELEMS_PER_SEG * tp->seg_cap + 16;
+    tp->seg_cap = 2 * (uint32_t)queue_size + 8;   /* as many again for reverse-run history */
+    tp->elem_cap = tp->reg_cap = TP_ELEMS_PER_SEG * tp->seg_cap + 4 * TP_EMIT_SPACE;
     tp->aout_cap = TP_AOUTS_PER_SEG * tp->seg_cap + TP_MAX_AIO;
     tp->segs = calloc(tp->seg_cap, sizeof(*tp->segs));
     tp->elems = calloc(tp->elem_cap, sizeof(*tp->elems));
@@ -32,6 +42,10 @@ tp_planner_t *tp_planner_create(int queue_size)
         tp_planner_destroy(tp);
         return NULL;
     }
+    prefault(tp->segs, tp->seg_cap * sizeof(*tp->segs));
+    prefault(tp->elems, tp->elem_cap * sizeof(*tp->elems));
+    prefault(tp->regs, tp->reg_cap * sizeof(*tp->regs));
+    prefault(tp->aouts, tp->aout_cap * sizeof(*tp->aouts));
     tp->lim.cycle_time = 0.001;
     tp->lim.amax = 1.0;
     tp->lim.max_feed_override = 1.0;

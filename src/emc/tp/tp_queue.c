@@ -1,17 +1,7 @@
-/* tp_queue.c: adding moves: geometry, junction choice, blend sizing and the one-move-delayed emission. */
+/* tp_queue.c: adding moves: validation, geometry, limits, synced outputs, and the emission order. */
 #include <math.h>
 #include <string.h>
 #include "tp_internal.h"
-
-/* Reversals sharper than this stop (LinuxCNC: within 2 degrees of going back). */
-#define TP_REVERSAL_RAD (M_PI - 2.0 * M_PI / 180.0)
-/* Tangent directions closer than this need no blend. */
-#define TP_TANGENT_RAD 1e-6
-/* Curvature jump (1/units) below which a tangent join counts as smooth. */
-#define TP_KINK_SMOOTH 1e-9
-/* Share of the tolerance the blend sizing aims at; the rest covers estimate errors. */
-#define TP_TOL_SHARE 0.95
-#define TP_BLEND_TRIES 5
 
 /* Segments added and not yet completed. */
 int tp_queue_live(const tp_planner_t *tp)
@@ -29,32 +19,54 @@ void tp_queue_reset(tp_planner_t *tp)
     tp->reg_open = 0;
     tp->stop_next = 1;
     tp->prov.valid = 0;
+    tp->prov.lazy = 0;
     tp->prev.valid = 0;
     tp->path_version++;
     tp->s_emit = 0.0;
     tp->goal = tp->pos;
     memset(&tp->ex, 0, sizeof(tp->ex));
+    tp->ex.dir = 1;
     tp->ex.tap = TP_TAP_NONE;
     tp->ex.unlock_joint = -1;
 }
 
-/* Free ring entries the executor no longer needs. */
+/* Free ring entries behind the executor, oldest first, only as far as room is needed: what stays
+ * is the history reverse run can go back along. */
 static void reclaim(tp_planner_t *tp)
 {
-    while (tp->elem_tail < tp->ex.elem && tp->elem_tail < tp->elem_head)
+    uint32_t keep_free = 2 * TP_EMIT_SPACE;
+    while (tp->elem_tail < tp->ex.elem && tp->elem_head - tp->elem_tail + keep_free > tp->elem_cap)
         tp->elem_tail++;
-    while (tp->reg_tail < tp->ex.reg && tp->reg_tail < tp->reg_head)
+    while (tp->reg_tail < tp->ex.reg && tp->reg_head - tp->reg_tail + keep_free > tp->reg_cap)
         tp->reg_tail++;
     uint64_t keep = tp->seg_done;
-    if (tp->seg_head >= 2 && keep > tp->seg_head - 2)
-        keep = tp->seg_head - 2;        /* the last two moves hold the pending junction */
+    if (tp->seg_head > tp->seg_tail) {
+        /* the open unit and the one before it hold the pending junction */
+        uint64_t h = tp_seg_at(tp, tp->seg_head - 1)->unit;
+        if (h > tp->seg_tail)
+            h = tp_seg_at(tp, h - 1)->unit;
+        if (h < keep)
+            keep = h;
+    }
     if (tp->elem_tail < tp->elem_head) {
         uint64_t g = tp_elem_at(tp, tp->elem_tail)->geo_seg;
         if (g < keep)
             keep = g;
     }
-    while (tp->seg_tail < keep)
+    while (tp->seg_tail < keep && tp->seg_head - tp->seg_tail + 4 > tp->seg_cap)
         tp->seg_tail++;
+    if (tp->seg_head - tp->seg_tail + 4 > tp->seg_cap) {
+        /* the history holds the segments: give up elements and regions to free some */
+        while (tp->elem_tail < tp->ex.elem && tp_elem_at(tp, tp->elem_tail)->geo_seg < tp->seg_done)
+            tp->elem_tail++;
+        while (tp->reg_tail < tp->ex.reg && tp_reg_at(tp, tp->reg_tail)->seg < tp->seg_done)
+            tp->reg_tail++;
+        keep = tp->elem_tail < tp->elem_head ? tp_elem_at(tp, tp->elem_tail)->geo_seg : tp->seg_done;
+        if (keep > tp->seg_done)
+            keep = tp->seg_done;
+        while (tp->seg_tail < keep && tp->seg_tail + 2 < tp->seg_head)
+            tp->seg_tail++;
+    }
 }
 
 /* Per-axis and path limits of a move. */
@@ -107,121 +119,24 @@ static int seg_valid(const tp_segment_t *in)
     return (int)in->motion_type >= TP_MOTION_IDLE && (int)in->motion_type <= TP_MOTION_INDEXROTARY;
 }
 
-/* How the previous move meets the new one. */
-static tp_jct_t classify(tp_planner_t *tp, tp_seg_t *a, tp_seg_t *b, tp_corner_t *c)
+/* The unit still open at the queue end (its head), or NULL. */
+static tp_seg_t *open_unit(tp_planner_t *tp)
 {
-    if (a->in.kind == TP_SEG_RIGID_TAP || b->in.kind == TP_SEG_RIGID_TAP)
-        return TP_JCT_STOP;
-    if (a->in.indexer_jnum >= 0 || b->in.indexer_jnum >= 0 || b->in.atspeed)
-        return TP_JCT_STOP;
-    if (a->in.motion_type == TP_MOTION_PROBING || b->in.motion_type == TP_MOTION_PROBING)
-        return TP_JCT_STOP;
-    if (a->sync != b->sync || a->geo.metric != b->geo.metric)
-        return TP_JCT_STOP;
-    int cond = (int)a->term;
-    tp_corner_describe(c, &a->geo, &b->geo);
-    if (cond == TP_TERM_COND_STOP || c->theta > TP_REVERSAL_RAD)
-        return TP_JCT_STOP;
-    int smooth = c->kink <= TP_KINK_SMOOTH || tp->type != TP_PLANNER_SCURVE;
-    if (c->theta < TP_TANGENT_RAD && (smooth || cond != TP_TERM_COND_BLEND))
-        return TP_JCT_TANGENT;
-    if (cond != TP_TERM_COND_BLEND || a->sync == TP_SYNC_POS)
-        return c->theta < TP_TANGENT_RAD ? TP_JCT_TANGENT : TP_JCT_STOP;
-    return TP_JCT_BLEND;
+    if (tp->seg_head <= tp->seg_tail)
+        return NULL;
+    tp_seg_t *last = tp_seg_at(tp, tp->seg_head - 1);
+    tp_seg_t *h = tp_unit_head(tp, last);
+    if (h->finalized || last->serial < tp->seg_done || h->serial < tp->seg_tail)
+        return NULL;
+    return h;
 }
 
-/* Cut lengths the blend between a and b wants, before the length limits. */
-static double blend_want(tp_planner_t *tp, tp_seg_t *a, tp_seg_t *b, const tp_corner_t *c)
+/* Head of the unit before unit h, when the blend into h comes from it. */
+static tp_seg_t *unit_before(tp_planner_t *tp, tp_seg_t *h)
 {
-    double v_need = fmin(a->in.vel, b->in.vel) * fmax(1.0, tp->lim.max_feed_override);
-    if (a->in.motion_type == TP_MOTION_TRAVERSE || b->in.motion_type == TP_MOTION_TRAVERSE)
-        v_need = fmax(v_need, fmin(a->in.ini_maxvel, b->in.ini_maxvel));
-    double acc = fmin(a->lim.acc[TP_PATH_AX], b->lim.acc[TP_PATH_AX]);
-    double jerk = tp->type == TP_PLANNER_SCURVE ? fmin(a->lim.jerk[TP_PATH_AX], b->lim.jerk[TP_PATH_AX]) : 0.0;
-    for (int i = 0; i < TP_NAX; i++) {
-        if (a->lim.acc[i] > 0.0)
-            acc = fmin(acc, a->lim.acc[i]);
-        if (jerk > 0.0 && a->lim.jerk[i] > 0.0)
-            jerk = fmin(jerk, a->lim.jerk[i]);
-    }
-    double d = 1.5 * tp_blend_need_cut(c, v_need, 0.7 * acc, jerk > 0.0 ? 0.4 * jerk : 0.0);
-    return d;
-}
-
-/* Store the cuts of a new blend between a (final except its end) and b (just added). */
-static void plan_cuts(tp_planner_t *tp, tp_seg_t *a, tp_seg_t *b, const tp_corner_t *c, double tol)
-{
-    double d = blend_want(tp, a, b, c);
-    if (tol > 0.0)
-        d = fmin(d, tp_blend_tol_cut(c, TP_TOL_SHARE * tol));
-    a->cut_out = fmin(d, fmin(0.5 * a->geo.len, a->geo.len - a->cut_in));
-    b->cut_in = fmin(d, 0.5 * b->geo.len);
-}
-
-/* Build the blend a -> b with its planned cuts, shrinking until it keeps the tolerance. */
-static int build_blend(tp_planner_t *tp, tp_seg_t *a, tp_seg_t *b, double tol, double *shrunk_a)
-{
-    tp_corner_t c;
-    tp_blend_spec_t spec;
-    tp_corner_describe(&c, &a->geo, &b->geo);
-    memset(&spec, 0, sizeof(spec));
-    spec.da = a->cut_out;
-    spec.db = b->cut_in;
-    for (int k = 0; k < TP_BLEND_TRIES; k++) {
-        double miss, dev;
-        if (tp_blend_build(&a->blend, &c, &spec) < 0)
-            return -1;
-        if (!(tol > 0.0))
-            break;
-        tp_blend_deviation(&a->blend, &c, &spec, &miss, &dev);
-        double worst = fmax(miss, dev);
-        if (worst <= tol)
-            break;
-        if (k == TP_BLEND_TRIES - 1)
-            return -1;
-        double f = fmin(0.9, TP_TOL_SHARE * tol / worst);
-        spec.da *= f;
-        spec.db *= f;
-    }
-    *shrunk_a = a->cut_out - spec.da;
-    a->cut_out = spec.da;
-    b->cut_in = spec.db;
-    (void)tp;
-    return 0;
-}
-
-/* The executor could still stop before global position s_at. */
-static int can_stop_before(const tp_planner_t *tp, double s_at)
-{
-    const tp_region_t *r = tp->ex.reg < tp->reg_head ? tp_reg_at((tp_planner_t *)tp, tp->ex.reg) : NULL;
-    tp_lim1_t lim = {r ? r->a : tp->lim.amax, r ? r->j : 0.0};
-    if (!(lim.acc > 0.0))
-        lim.acc = 1.0;
-    double reach = tp_stop_dist(tp->ex.v, tp->ex.a, &lim);
-    return tp->ex.s + reach + tp->ex.v * tp->lim.cycle_time <= s_at;
-}
-
-/* Settle the end of a (whose body is already emitted to its end): shorten it and emit the blend a -> b. */
-static void emit_junction(tp_planner_t *tp, tp_seg_t *a, tp_seg_t *b)
-{
-    double shrunk = 0.0;
-    if (a->jct_out == TP_JCT_BLEND) {
-        double blend_start = tp->s_emit - a->cut_out;
-        if (!can_stop_before(tp, blend_start) || build_blend(tp, a, b, a->tol, &shrunk) < 0 ||
-            tp_emit_truncate(tp, a->cut_out) < 0) {
-            a->jct_out = TP_JCT_STOP;
-            a->cut_out = 0.0;
-            b->cut_in = 0.0;
-        }
-    }
-    tp->prov.valid = 0;
-    b->jct_in = a->jct_out;
-    a->finalized = 1;
-    if (a->jct_out == TP_JCT_BLEND)
-        tp_emit_blend(tp, a, b, 0);
-    else if (a->jct_out == TP_JCT_STOP)
-        tp->stop_next = 1;
-    (void)shrunk;
+    if (h->jct_in != TP_JCT_BLEND || h->serial <= tp->seg_tail)
+        return NULL;
+    return tp_unit_head(tp, tp_seg_at(tp, h->serial - 1));
 }
 
 /* Fill a new segment record from the add arguments and the sticky state. */
@@ -230,6 +145,7 @@ static int seg_fill(tp_planner_t *tp, tp_seg_t *s, const tp_segment_t *in)
     memset(s, 0, sizeof(*s));
     s->in = *in;
     s->serial = tp->seg_head;
+    s->unit = s->unit_last = s->serial;
     s->sync = tp->sync_mode;
     s->sync_k = tp->sync_k;
     s->spindle = tp->sync_spindle;
@@ -241,6 +157,8 @@ static int seg_fill(tp_planner_t *tp, tp_seg_t *s, const tp_segment_t *in)
     if (g < 0)
         return g;
     seg_limits(tp, s);
+    s->own0 = 0.0;
+    s->own1 = s->geo.len;
     s->jct_in = TP_JCT_STOP;
     s->jct_out = TP_JCT_OPEN;
     s->term = tp->term_cond;
@@ -296,33 +214,45 @@ tp_result_t tp_queue_add(tp_planner_t *tp, const tp_segment_t *in)
     if (g < 0)
         return in->kind == TP_SEG_CIRCLE ? TP_INVALID_PARAMS : TP_ZERO_LENGTH;
     take_io(tp, s);
-    tp_seg_t *last = tp->seg_head > tp->seg_tail ? tp_seg_at(tp, tp->seg_head - 1) : NULL;
-    if (last && last->finalized)
-        last = NULL;
-    if (last && last->serial >= tp->seg_done) {
-        tp_corner_t c;
-        last->jct_out = classify(tp, last, s, &c);
-        if (last->jct_out == TP_JCT_BLEND)
-            plan_cuts(tp, last, s, &c, last->tol);
-        emit_junction(tp, last, s);
+    tp_seg_t *last = open_unit(tp);
+    int rollback_ok = last && tp->prov.valid && tp_jct_can_stop_before(tp, tp->prov.s_emit);
+    if (rollback_ok && tp_unit_can_absorb(tp, last, s)) {
+        /* the new move extends the open unit: emit that unit again, longer */
+        tp_emit_rollback(tp);
+        tp_unit_absorb(tp, last, s);
+        tp->seg_head++;
+        tp->goal = tp_vec_from_pose(&in->end);
+        tp_jct_provisional(tp, unit_before(tp, last), last);
+        return TP_OK;
+    }
+    if (last)
+        tp_jct_plan(tp, last, s);
+    if (rollback_ok) {
+        tp_emit_rollback(tp);
+        tp_jct_commit(tp, unit_before(tp, last), last, s);
     } else {
         if (last) {
-            last->jct_out = TP_JCT_STOP;        /* already run to its end */
-            last->finalized = 1;
+            tp_jct_provisional_due(tp, 1);            /* the tail stays: it must exist */
+            last->jct_out = s->jct_in = TP_JCT_STOP;  /* already on its way to its end */
+            if (tp->prov.valid)
+                tp_unit_split_body(tp, last, tp->prov.body_elem);
+            for (uint64_t k = last->serial; k <= last->unit_last; k++)
+                tp_seg_at(tp, k)->finalized = 1;
         }
         tp->prov.valid = 0;
         tp->stop_next = 1;
+        last = NULL;
     }
     tp->seg_head++;
     if (in->kind == TP_SEG_RIGID_TAP) {
+        s->jct_in = TP_JCT_STOP;
         s->jct_out = TP_JCT_STOP;
-        s->finalized = 1;
-        tp_emit_piece(tp, s, s, 0, 0.0, 0.0, TP_REG_TAP);
         tp->stop_next = 1;
+        tp_jct_commit(tp, NULL, s, NULL);
         tp->prov.valid = 0;
         return TP_OK;
     }
     tp->goal = tp_vec_from_pose(&in->end);
-    tp_emit_provisional(tp, s);
+    tp_jct_provisional(tp, last, s);
     return TP_OK;
 }

@@ -113,9 +113,11 @@ void tp_sync_adjust(tp_planner_t *tp, const tp_cycle_in_t *in, tp_window_t *w)
     tp_seg_t *s = tp_seg_at(tp, r->seg);
     const tp_spindle_in_t *sp = &in->spindle[tp->ex.spindle];
     double k = fabs(s->sync_k);
+    /* the position commanded at the end of this cycle should match the spindle read now */
     double target = tp->ex.sync_s0 + (sp->revs - tp->ex.sync_revs0) * tp->ex.sync_dir * k;
     double vel = sp->speed_rps * tp->ex.sync_dir * k;
-    double v = vel + (target - tp->ex.s) / TP_SYNC_TAU;
+    double ahead = tp->ex.s + tp->ex.v * tp->lim.cycle_time;
+    double v = vel + (target - ahead) / TP_SYNC_TAU;
     for (int k = 0; k < w->nr; k++)
         w->r[k].v = fmin(w->r[k].v, v > 0.0 ? v : 0.0);
 }
@@ -126,7 +128,8 @@ static double tap_follow(tp_planner_t *tp, const tp_cycle_in_t *in, const tp_seg
     const tp_spindle_in_t *sp = &in->spindle[tp->ex.spindle];
     double k = fabs(s->sync_k);
     double target = (sp->revs - tp->ex.sync_revs0) * tp->ex.sync_dir * k;
-    return sp->speed_rps * tp->ex.sync_dir * k + (target - tp->ex.tap_x) / TP_SYNC_TAU;
+    double ahead = tp->ex.tap_x + tp->ex.tap_v * tp->lim.cycle_time;
+    return sp->speed_rps * tp->ex.sync_dir * k + (target - ahead) / TP_SYNC_TAU;
 }
 
 /* Move the tap coordinate towards speed vt for one cycle within the tap line's limits. */

@@ -32,21 +32,18 @@ static tp_lim1_t lim_min(tp_lim1_t a, double acc, double jerk)
     return r;
 }
 
-/* Speed on the braking curve into (v, lim) at distance d, covering any acceleration there. */
+/* Largest speed any state (any acceleration) can have at distance d before a target of speed v and
+ * still meet it: decelerating at the full acceleration already, the target may be met with the
+ * acceleration still negative, so no final jerk ramp is needed. */
 static double curve_plus(double v, double d, const tp_lim1_t *lim)
 {
-    if (lim->jerk > 0.0) {
-        double tr = lim->acc / lim->jerk;
-        double d_ramp = v * tr + lim->jerk * tr * tr * tr / 6.0;
-        if (d < d_ramp)
-            d = d_ramp;
-    }
-    return tp_brake_curve(v, d, lim);
+    return sqrt(v * v + 2.0 * lim->acc * d);
 }
 
 /* A valley: the speed allowed at a region start and the limits of the stretch before it. */
 typedef struct valley {
     double s, v;
+    double cap;                 /* the region's own cap (v is INFINITY where it limits nothing) */
     tp_lim1_t lim;
     int stop;
 } valley_t;
@@ -54,9 +51,9 @@ typedef struct valley {
 /* The stretch before a valley allows clearly more than the span after it. */
 static int lim_stronger(const tp_lim1_t *before, const tp_lim1_t *span)
 {
-    if (before->acc > 1.25 * span->acc)
+    if (before->acc > 2.0 * span->acc)
         return 1;
-    return span->jerk > 0.0 && before->jerk > 1.25 * span->jerk;
+    return span->jerk > 0.0 && before->jerk > 2.0 * span->jerk;
 }
 
 /* Backward pass: keep the valleys that bind, lowered so that each can reach the next at rest
@@ -78,7 +75,7 @@ static void reduce(tp_window_t *w, const valley_t *vl, int n, tp_lim1_t first_li
         if ((bind || lim_stronger(&vl[k].lim, &span)) && m < TP_WINDOW_MAX) {
             rev[m - 1].lim = span;
             rev[m].s = vl[k].s;
-            rev[m].v = fmin(vl[k].v, tp_chain_vmax(vb, d, &span));
+            rev[m].v = fmin(fmin(vl[k].v, vl[k].cap), tp_chain_vmax(vb, d, &span));
             rev[m].stop = vl[k].stop && rev[m].v <= 0.0;
             m++;
             b = k;
@@ -110,23 +107,74 @@ static void add_stretch(tp_window_t *w, double s0, double cap, const tp_region_t
     w->r[w->nr].v = cap;
     w->r[w->nr].lim.acc = r->a;
     w->r[w->nr].lim.jerk = r->j;
+    w->r[w->nr].jerk_own = r->j;
     w->nr++;
 }
 
-/* Lower the acceleration of every stretch to a cap met within the anticipation distance. */
-static void anticipate(tp_window_t *w, double s0, double acc)
+/* Lower the acceleration and jerk of every stretch to caps met within the anticipation distance:
+ * an acceleration carried into a stretch of smaller jerk settles later and would overshoot. */
+static void anticipate(tp_window_t *w, double s0, double acc, double jerk)
 {
     for (int k = 0; k < w->nr; k++)
-        if (w->r[k].s <= s0)
+        if (w->r[k].s <= s0) {
             w->r[k].lim.acc = fmin(w->r[k].lim.acc, acc);
+            if (jerk > 0.0)
+                w->r[k].lim.jerk = w->r[k].lim.jerk > 0.0 ? fmin(w->r[k].lim.jerk, jerk) : jerk;
+        }
 }
 
-/* Build the window from the executor state: speed targets, and the stretches of the next cycle. */
-void tp_window_build(tp_planner_t *tp, tp_window_t *w, double fs, double rs, double spindle_rps)
+
+/* A region the executor meets walking in direction dir: where it enters it (backwards positions
+ * are -s), whether a stop lies at that point, whether it may enter at all (reverse run cannot run
+ * synchronised or tapping moves backwards). */
+typedef struct meet {
+    const tp_region_t *r;
+    double pos;
+    int stop;
+    int blocked;
+} meet_t;
+
+/* The k-th region after the current one in direction dir; 0 past the end of the kept path. */
+static int meet_region(tp_planner_t *tp, int dir, uint64_t k, meet_t *m)
+{
+    if (dir > 0) {
+        uint64_t n = tp->ex.reg + k;
+        if (n >= tp->reg_head)
+            return 0;
+        m->r = tp_reg_at(tp, n);
+        m->pos = m->r->s0;
+        m->stop = m->r->v_start <= 0.0;
+        m->blocked = 0;
+        return 1;
+    }
+    if (tp->ex.reg < tp->reg_tail + k)
+        return 0;
+    uint64_t n = tp->ex.reg - k;
+    m->r = tp_reg_at(tp, n);
+    m->pos = -(m->r->s0 + m->r->len);
+    m->stop = (tp_reg_at(tp, n + 1)->flags & TP_REG_STOP) != 0;
+    m->blocked = (m->r->flags & (TP_REG_SYNC_POS | TP_REG_TAP)) != 0;
+    return 1;
+}
+
+/* Where the kept path ends in direction dir: after the last region met (the current one when none
+ * was met). */
+static double path_end(tp_planner_t *tp, int dir, const meet_t *last, int have_last)
+{
+    if (dir > 0) {
+        const tp_region_t *r = tp_reg_at(tp, tp->reg_head - 1);
+        return r->s0 + r->len;
+    }
+    return -(have_last ? last->r->s0 : tp_reg_at(tp, tp->ex.reg)->s0);
+}
+
+/* Build the window from the executor state for direction dir (positions -s backwards): speed
+ * targets, and the stretches of the next cycle. */
+void tp_window_build(tp_planner_t *tp, tp_window_t *w, double fs, double rs, double spindle_rps, int dir)
 {
     valley_t vl[TP_WINDOW_MAX + 1];
     int n = 0;
-    double s = tp->ex.s, T = tp->lim.cycle_time;
+    double s = dir > 0 ? tp->ex.s : -tp->ex.s, T = tp->lim.cycle_time;
     const tp_region_t *cur = tp_reg_at(tp, tp->ex.reg);
     tp_lim1_t lim_cur = reg_lim(cur);
     double cap_cur = tp_region_cap(tp, cur, fs, rs, spindle_rps);
@@ -137,21 +185,30 @@ void tp_window_build(tp_planner_t *tp, tp_window_t *w, double fs, double rs, dou
     double ramp = lim_cur.jerk > 0.0 ? v * (fabs(tp->ex.a) + lim_cur.acc) / lim_cur.jerk * 1.5 : 0.0;
     double reach = TP_WINDOW_REACH * tp_stop_dist(v, fabs(tp->ex.a), &lim_cur) + 4.0 * travel;
     /* the window only grows: a pseudo stop that moved closer could make a safe state unsafe */
-    if (tp->ex.window_end - s > reach)
+    if (dir > 0 && tp->ex.window_end - s > reach)
         reach = tp->ex.window_end - s;
-    tp->ex.window_end = s + reach;
+    if (dir > 0)
+        tp->ex.window_end = s + reach;
     tp_lim1_t before = lim_cur;
-    uint64_t k;
-    for (k = tp->ex.reg + 1; k < tp->reg_head && n < TP_WINDOW_MAX; k++) {
-        const tp_region_t *r = tp_reg_at(tp, k);
-        double d = r->s0 - s;
-        double rcap = tp_region_cap(tp, r, fs, rs, spindle_rps), cap = fmin(rcap, r->v_start);
+    /* a region start limits nothing unless its cap is below every speed allowed before it */
+    double v_before = fmax(tp->ex.v, cap_cur);
+    meet_t m;
+    int have = 0, more;
+    uint64_t k = 1;
+    for (; (more = meet_region(tp, dir, k, &m)) && !m.blocked && n < TP_WINDOW_MAX; k++) {
+        const tp_region_t *r = m.r;
+        have = 1;
+        double d = m.pos - s;
+        double rcap = tp_region_cap(tp, r, fs, rs, spindle_rps), cap = m.stop ? 0.0 : rcap;
+        double limit = cap < v_before ? cap : INFINITY;
+        v_before = fmax(v_before, rcap);
         if (d < travel)
-            add_stretch(w, r->s0, rcap, r);
+            add_stretch(w, m.pos, rcap, r);
         if (d < travel + ramp)
-            anticipate(w, r->s0, r->a);
-        vl[n].s = r->s0;
-        vl[n].v = cap;
+            anticipate(w, m.pos, r->a, r->j);
+        vl[n].s = m.pos;
+        vl[n].v = limit;
+        vl[n].cap = cap;
         vl[n].lim = before;
         vl[n].stop = cap <= 0.0;
         n++;
@@ -159,16 +216,15 @@ void tp_window_build(tp_planner_t *tp, tp_window_t *w, double fs, double rs, dou
         if (d > reach)
             break;
     }
-    if (k >= tp->reg_head) {
-        /* end of the known path: a stop there */
-        const tp_region_t *last = tp_reg_at(tp, tp->reg_head - 1);
-        vl[n].s = last->s0 + last->len;
-        vl[n].v = 0.0;
+    if (!more || m.blocked || n == 0) {
+        /* end of the kept path: a stop there */
+        vl[n].s = more && m.blocked ? m.pos : path_end(tp, dir, &m, have);
+        vl[n].v = vl[n].cap = 0.0;
         vl[n].lim = before;
         vl[n].stop = 1;
         n++;
     } else {
-        vl[n - 1].v = 0.0;              /* beyond the reach: a pseudo stop bounds the pass */
+        vl[n - 1].v = vl[n - 1].cap = 0.0;  /* beyond the reach: a pseudo stop bounds the pass */
         vl[n - 1].stop = 0;
     }
     reduce(w, vl, n, lim_cur);

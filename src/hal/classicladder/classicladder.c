@@ -15,13 +15,16 @@ typedef struct {
     cl_mem_t mem;
 } cl_link_t;
 
-/* Print usage to stderr; returns the exit status. */
-static int usage(void)
+/* Print usage to out; returns the exit status (0 when asked for with --help). */
+static int usage(FILE *out, int status)
 {
-    fprintf(stderr, "Usage: classicladder [--nogui] [--modmaster] PROJECT.clp\n"
-                    "Loads PROJECT.clp into the realtime module classicladder_rt "
-                    "(loadrt classicladder_rt first).\n");
-    return 1;
+    fprintf(out, "Usage: classicladder [--nogui] [--modmaster] PROJECT.clp\n"
+                 "Loads PROJECT.clp into the realtime module classicladder_rt "
+                 "(loadrt classicladder_rt first).\n"
+                 "  --nogui      load and exit (the only mode of this build)\n"
+                 "  --modmaster  accepted for compatibility; Modbus is not supported\n"
+                 "  --help       this text\n");
+    return status;
 }
 
 /* Map the header, read the total size, then map the whole segment. */
@@ -124,17 +127,19 @@ int main(int argc, char **argv)
     int gui = 1, rc;
 
     for (int i = 1; i < argc; i++) {
+        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0)
+            return usage(stdout, 0);
         if (strcmp(argv[i], "--nogui") == 0)
             gui = 0;
         else if (is_modbus_option(argv[i]))
             fprintf(stderr, "classicladder: Modbus is not supported; %s ignored\n", argv[i]);
         else if (argv[i][0] == '-' || path)
-            return usage();
+            return usage(stderr, 1);
         else
             path = argv[i];
     }
     if (!path)
-        return usage();
+        return usage(stderr, 1);
     if (gui)
         fprintf(stderr, "classicladder: no graphical editor in this build; loading %s as with "
                         "--nogui\n", path);

@@ -17,7 +17,10 @@ def pin_macros(item):
     args, set_args, index = _access(item)
     ref = '(*(__comp_inst->%s[i]))' % f if index else '(*__comp_inst->%s)' % f
     lines = ['#define %s_ptr%s (__comp_inst->%s%s)' % (n, args, f, index)]
-    if item.newapi:
+    if item.type == 'port':
+        # a port pin names its hal_port_t *, what hal_port_read() and friends take (LinuxCNC's hal.h)
+        lines.append('#define %s%s (__comp_inst->%s%s)' % (n, args, f, index))
+    elif item.newapi:
         lines.append('#define %s%s (0+%s)' % (n, args, ref))
         if not ro:
             lines.append('#define %s_set(%s) (%s = (v))' % (n, set_args, ref))

@@ -1,6 +1,8 @@
 """C code generation: module parameters, entry points and item macros."""
 
 MAX_PERSONALITIES = 64
+# Instance names a userspace component takes with names= (an array, as LinuxCNC's)
+MAX_USER_NAMES = 16
 
 
 def gen_modparams(comp, out):
@@ -16,7 +18,10 @@ def gen_modparams(comp, out):
         out.append('static int count%s = 0;' % unused)
         if rt and not comp.option('count_function'):
             out.append('RTAPI_MP_INT(count, "number of %s");' % comp.name)
-        out.append('static char *names%s = "";' % unused)
+        if rt:
+            out.append('static char *names%s = "";' % unused)
+        else:
+            out.append('static char *names[%d]%s = {0};' % (MAX_USER_NAMES, unused))
         if rt:
             out.append('RTAPI_MP_STRING(names, "names of %s");' % comp.name)
     if comp.uses_personality:
@@ -59,8 +64,29 @@ def gen_export_call(comp, out, pad):
     out.append(pad + 'if (r != 0) return r;')
 
 
+def gen_user_names_loop(comp, out):
+    """Userspace: create one instance per entry of the names[] array main() filled."""
+    out.append('static int __comp_export_names(void) {')
+    out.append('    char buf[HAL_NAME_LEN + 1];')
+    out.append('    int i, r;')
+    out.append('    for (i = 0; i < %d && names[i]; i++) {' % MAX_USER_NAMES)
+    out.append('        if (strlen(names[i]) > HAL_NAME_LEN) {')
+    out.append('            rtapi_print_msg(RTAPI_MSG_ERR, "names: \\"%s\\" too long\\n", names[i]);')
+    out.append('            return -EINVAL;')
+    out.append('        }')
+    out.append('        rtapi_snprintf(buf, sizeof(buf), "%s", names[i]);')
+    gen_export_call(comp, out, '        ')
+    out.append('    }')
+    out.append('    return 0;')
+    out.append('}')
+    out.append('')
+
+
 def gen_names_loop(comp, out):
     """Create one instance per comma-separated entry of names=."""
+    if comp.userspace:
+        gen_user_names_loop(comp, out)
+        return
     out.append('static int __comp_export_names(void) {')
     out.append('    char buf[HAL_NAME_LEN + 1];')
     out.append('    int i = 0, r = 0;')
@@ -132,6 +158,9 @@ def gen_create_instances(comp, out):
     if comp.singleton:
         out.append('    r = export("%s", 0%s);' % (
             comp.prefix_base, ', personality[0]' if comp.uses_personality else ''))
+        return
+    if comp.option('count_function') and comp.userspace:
+        out.append('    r = __comp_export_count(get_count());')
         return
     if comp.option('count_function'):
         out.append('    if (names[0]) {')
@@ -219,10 +248,17 @@ def gen_user_main(comp, out):
             out.append('        fprintf(stderr, "names= is not supported with count_function\\n");')
             out.append('        return 1;')
         else:
-            out.append('        names = v;')
+            out.append('        int n = 0;')
             out.append('        if (has_count) {')
             out.append('            fprintf(stderr, "count= and names= are mutually exclusive\\n");')
             out.append('            return 1;')
+            out.append('        }')
+            out.append('        for (v = strtok(v, ","); v; v = strtok(NULL, ",")) {')
+            out.append('            if (n == %d) {' % MAX_USER_NAMES)
+            out.append('                fprintf(stderr, "names=: at most %d names\\n");' % MAX_USER_NAMES)
+            out.append('                return 1;')
+            out.append('            }')
+            out.append('            names[n++] = v;')
             out.append('        }')
         out.append('    }')
     else:
@@ -245,7 +281,7 @@ def gen_entry_points(comp, out):
     if not comp.singleton:
         gen_count_loop(comp, out)
         gen_names_loop(comp, out)
-        if comp.option('count_function'):
+        if comp.option('count_function') and not comp.userspace:
             gen_count_function_check(comp, out)
     gen_app_main(comp, out)
     if comp.userspace:

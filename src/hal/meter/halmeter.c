@@ -4,10 +4,14 @@
 #include "rtapi.h"
 #include "hal.h"
 
-/* Prints the command line summary to stderr. */
-static void usage(void)
+/* Prints the command line summary to out; the explanation only for --help (on stdout). */
+static void usage(FILE *out)
 {
-    fprintf(stderr, "Usage: halmeter [-s] {pin|sig|param} NAME\n");
+    fprintf(out, "Usage: halmeter [-s] {pin|sig|param} NAME\n");
+    if (out == stdout)
+        fprintf(out, "Prints the current value of one HAL pin, signal or parameter and exits.\n"
+                     "  -s      accepted for compatibility (the output is always one line)\n"
+                     "  --help  this text\n");
 }
 
 /* Prints a value cell of the given type as `halcmd getp` does; the cell is read through its
@@ -53,18 +57,22 @@ int main(int argc, char **argv)
 {
     int first = 1, retval;
 
+    if (argc > 1 && (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0)) {
+        usage(stdout);
+        return 0;
+    }
     if (argc > 1 && strcmp(argv[1], "-s") == 0) {
         first = 2;
     }
     if (argc - first != 2) {
-        usage();
+        usage(stderr);
         return 1;
     }
     if (strcmp(argv[first], "pin") != 0 && strcmp(argv[first], "sig") != 0
         && strcmp(argv[first], "signal") != 0 && strcmp(argv[first], "param") != 0) {
         fprintf(stderr, "halmeter: ERROR: unknown item type '%s', must be pin, sig or param\n",
                 argv[first]);
-        usage();
+        usage(stderr);
         return 1;
     }
     retval = hal_lib_init();

@@ -7,7 +7,7 @@
 static PyObject *cell_value(hal_type_t type, hal_data_u *cell)
 {
     if (type == HAL_PORT) {
-        return PyLong_FromUnsignedLong(cell->p ? hal_port_buffer_size(cell->p) : 0);
+        return PyLong_FromUnsignedLong(cell->p ? hal_port_buffer_size(&cell->p) : 0);
     }
     return hal_py_from_value(type, cell);
 }

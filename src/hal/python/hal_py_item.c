@@ -60,7 +60,7 @@ static PyObject *item_get(PyObject *obj, PyObject *unused)
 
     (void)unused;
     if (self->type == HAL_PORT) {
-        return PyLong_FromUnsignedLong(cell->p ? hal_port_buffer_size(cell->p) : 0);
+        return PyLong_FromUnsignedLong(cell->p ? hal_port_buffer_size(&cell->p) : 0);
     }
     return hal_py_from_value(self->type, cell);
 }
@@ -111,7 +111,7 @@ static int item_port(hal_py_item_t *self, const char *op, int dir)
 /* item.write(bytes|str) -> True when all bytes fit (OUT ports). */
 static PyObject *item_port_write(PyObject *obj, PyObject *data)
 {
-    int port = item_port((hal_py_item_t *)obj, "write", HAL_OUT);
+    hal_port_t port = item_port((hal_py_item_t *)obj, "write", HAL_OUT);
     const char *bytes;
     Py_ssize_t len;
 
@@ -122,13 +122,13 @@ static PyObject *item_port_write(PyObject *obj, PyObject *data)
         bytes = NULL;
     }
     if (bytes == NULL) return NULL;
-    return PyBool_FromLong(hal_port_write(port, bytes, (unsigned)len));
+    return PyBool_FromLong(hal_port_write(&port, bytes, (unsigned)len));
 }
 
 /* Shared body of read/peek: count bytes as bytes, or False when not available. */
 static PyObject *port_take(PyObject *obj, PyObject *args, const char *op, int consume)
 {
-    int port = item_port((hal_py_item_t *)obj, op, HAL_IN);
+    hal_port_t port = item_port((hal_py_item_t *)obj, op, HAL_IN);
     unsigned count;
     PyObject *out;
     bool ok;
@@ -136,8 +136,8 @@ static PyObject *port_take(PyObject *obj, PyObject *args, const char *op, int co
     if (port == 0 || !PyArg_ParseTuple(args, "I", &count)) return NULL;
     out = PyBytes_FromStringAndSize(NULL, count);
     if (out == NULL) return NULL;
-    ok = consume ? hal_port_read(port, PyBytes_AS_STRING(out), count)
-                 : hal_port_peek(port, PyBytes_AS_STRING(out), count);
+    ok = consume ? hal_port_read(&port, PyBytes_AS_STRING(out), count)
+                 : hal_port_peek(&port, PyBytes_AS_STRING(out), count);
     if (!ok) {
         Py_DECREF(out);
         Py_RETURN_FALSE;
@@ -160,30 +160,30 @@ static PyObject *item_port_peek(PyObject *obj, PyObject *args)
 /* item.peek_commit(n) -> bool: drops n peeked bytes. */
 static PyObject *item_port_peek_commit(PyObject *obj, PyObject *args)
 {
-    int port = item_port((hal_py_item_t *)obj, "peek_commit", HAL_IN);
+    hal_port_t port = item_port((hal_py_item_t *)obj, "peek_commit", HAL_IN);
     unsigned count;
 
     if (port == 0 || !PyArg_ParseTuple(args, "I", &count)) return NULL;
-    return PyBool_FromLong(hal_port_peek_commit(port, count));
+    return PyBool_FromLong(hal_port_peek_commit(&port, count));
 }
 
 /* item.clear(): empties the port. */
 static PyObject *item_port_clear(PyObject *obj, PyObject *unused)
 {
-    int port = item_port((hal_py_item_t *)obj, "clear", 0);
+    hal_port_t port = item_port((hal_py_item_t *)obj, "clear", 0);
 
     (void)unused;
     if (port == 0) return NULL;
-    hal_port_clear(port);
+    hal_port_clear(&port);
     Py_RETURN_NONE;
 }
 
 /* Shared body of size/readable/writable: an unsigned port figure. */
-static PyObject *port_figure(PyObject *obj, const char *op, unsigned (*fn)(hal_port_t))
+static PyObject *port_figure(PyObject *obj, const char *op, unsigned (*fn)(const hal_port_t *))
 {
-    int port = item_port((hal_py_item_t *)obj, op, 0);
+    hal_port_t port = item_port((hal_py_item_t *)obj, op, 0);
     if (port == 0) return NULL;
-    return PyLong_FromUnsignedLong(fn(port));
+    return PyLong_FromUnsignedLong(fn(&port));
 }
 
 /* item.size(): a port's buffer size in bytes. */

@@ -105,7 +105,7 @@ static PyObject *lookup_p(const char *name)
         return NULL;
     }
     if (type == HAL_PORT) {
-        return PyLong_FromUnsignedLong(data.p ? hal_port_buffer_size(data.p) : 0);
+        return PyLong_FromUnsignedLong(data.p ? hal_port_buffer_size(&data.p) : 0);
     }
     return hal_py_from_value(type, &data);
 }

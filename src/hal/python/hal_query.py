@@ -12,15 +12,17 @@ def _halmod():
 
 
 def _item(raw, haltype):
-    """Public dict of a pin or param: `name` is the original name, `alias` the alias."""
+    """Public dict of a pin or param: `name` is the original name, `alias` the alias; a pin also
+    names its signal (None when unlinked), between `alias` and `comp` as LinuxCNC orders them."""
     hal = _halmod()
     aliased = raw["original"] is not None
     info = {"haltype": haltype, "name": raw["original"] if aliased else raw["name"],
             "type": hal.Type(raw["type"]), "dir": hal.Dir(raw["dir"]), "value": raw["value"],
-            "alias": raw["name"] if aliased else None,
-            "comp": raw["comp"], "comp_id": raw["comp_id"]}
-    if raw.get("signal") is not None:
-        info["signal"] = raw["signal"]
+            "alias": raw["name"] if aliased else None}
+    if haltype == "pin":
+        info["signal"] = raw.get("signal")
+    info["comp"] = raw["comp"]
+    info["comp_id"] = raw["comp_id"]
     return info
 
 
@@ -53,12 +55,12 @@ def _funct(raw):
 
 
 def _thread(raw):
-    """Public dict of a thread; functions numbered from 1, init functs again from 1."""
+    """Public dict of a thread; functions numbered from 0, init functs again from 0."""
     functions, counts = [], {False: 0, True: 0}
     for name, is_init in raw["functions"]:
-        counts[is_init] += 1
         functions.append({"haltype": "threadfunction", "name": name,
                           "index": counts[is_init], "is_init": is_init})
+        counts[is_init] += 1
     return {"haltype": "thread", "name": raw["name"], "comp": raw["comp"],
             "comp_id": raw["comp_id"], "priority": raw["priority"], "period": raw["period"],
             "functions": functions}
@@ -142,5 +144,8 @@ def threads():
 
 
 def signalpins(sig):
-    """Dict pin name -> pin description of every pin linked to signal sig."""
+    """Dict pin name -> pin description of every pin linked to signal sig; None when there is
+    no such signal."""
+    if signal(sig) is None:
+        return None
     return {name: info for name, info in pins().items() if info.get("signal") == sig}

@@ -34,7 +34,7 @@ static void print_record(FILE *out, hal_stream_t *stream, const union hal_stream
     have_last = 1;
     last = sampleno;
     if (tag) {
-        fprintf(out, "%u ", sampleno);  /* the HAL library numbers records from 0 */
+        fprintf(out, "%u ", sampleno - 1);  /* the HAL library numbers records from 1, tags start at 0 */
     }
     for (n = 0; n < count; n++) {
         print_field(out, hal_stream_element_type(stream, n), &rec[n]);
@@ -60,6 +60,16 @@ static void sample_loop(FILE *out, hal_stream_t *stream, long count, int tag)
     }
 }
 
+static const char usage_text[] =
+    "Usage: halsampler [-c CHAN] [-n COUNT] [-t] [-N NAME] [FILE]\n"
+    "Prints the samples recorded by the realtime 'sampler' channel CHAN (default 0), one line\n"
+    "per sample, to FILE or standard output.\n"
+    "  -c CHAN   sampler channel 0..7\n"
+    "  -n COUNT  stop after COUNT samples (default: until interrupted)\n"
+    "  -t        start each line with the sample number\n"
+    "  -N NAME   HAL component name (default halsamplerCHAN)\n"
+    "  --help    this text\n";
+
 /* Entry point: parse options, attach, open the output, print records, clean up. */
 int main(int argc, char **argv)
 {
@@ -68,8 +78,9 @@ int main(int argc, char **argv)
     FILE *out = stdout;
     int comp_id;
 
-    if (sampling_parse_args(argc, argv, "cntN", &opts) < 0) {
-        return 1;
+    int rc = sampling_parse_args(argc, argv, "cntN", usage_text, &opts);
+    if (rc != 0) {
+        return rc < 0 ? 1 : 0;
     }
     sampling_install_signals();
     comp_id = sampling_attach(&opts, "halsampler", SAMPLER_KEY_BASE, &stream);

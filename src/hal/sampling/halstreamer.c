@@ -103,6 +103,14 @@ static void stream_loop(FILE *in, hal_stream_t *stream)
     free(line);
 }
 
+static const char usage_text[] =
+    "Usage: halstreamer [-c CHAN] [-N NAME] [FILE]\n"
+    "Feeds lines of numbers from FILE or standard input to the realtime 'streamer' channel\n"
+    "CHAN (default 0), one line per sample.\n"
+    "  -c CHAN   streamer channel 0..7\n"
+    "  -N NAME   HAL component name (default halstreamerCHAN)\n"
+    "  --help    this text\n";
+
 /* Entry point: parse options, attach, stream the input, clean up. */
 int main(int argc, char **argv)
 {
@@ -111,8 +119,9 @@ int main(int argc, char **argv)
     FILE *in = stdin;
     int comp_id;
 
-    if (sampling_parse_args(argc, argv, "cN", &opts) < 0) {
-        return 1;
+    int rc = sampling_parse_args(argc, argv, "cN", usage_text, &opts);
+    if (rc != 0) {
+        return rc < 0 ? 1 : 0;
     }
     if (opts.filename != NULL) {
         in = fopen(opts.filename, "r");

@@ -86,14 +86,19 @@ static int parse_option(int argc, char **argv, int *i, const char *allowed,
     return apply_option(opt, argv[*i], opts);
 }
 
-/* Parses the whole command line into opts. */
-int sampling_parse_args(int argc, char **argv, const char *allowed, sampling_opts_t *opts)
+/* Parses the whole command line into opts; 1 after printing the help text. */
+int sampling_parse_args(int argc, char **argv, const char *allowed, const char *usage_text,
+                        sampling_opts_t *opts)
 {
     int i;
 
     memset(opts, 0, sizeof(*opts));
     opts->count = -1;
     for (i = 1; i < argc; i++) {
+        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
+            fputs(usage_text, stdout);
+            return 1;
+        }
         if (argv[i][0] == '-') {
             if (parse_option(argc, argv, &i, allowed, opts) < 0) {
                 return -1;

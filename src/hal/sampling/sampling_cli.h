@@ -22,8 +22,10 @@ typedef struct {
 /* Set by SIGINT/SIGTERM. */
 extern volatile sig_atomic_t sampling_stop;
 
-/* Parses argv; `allowed` lists the option letters accepted. 0 or -1 (message printed). */
-int sampling_parse_args(int argc, char **argv, const char *allowed, sampling_opts_t *opts);
+/* Parses argv; `allowed` lists the option letters accepted. 0, -1 (message printed) or 1 when
+   --help/-h printed usage_text on stdout. */
+int sampling_parse_args(int argc, char **argv, const char *allowed, const char *usage_text,
+                        sampling_opts_t *opts);
 
 /* Installs SIGINT/SIGTERM handlers that set sampling_stop (no restart). */
 void sampling_install_signals(void);

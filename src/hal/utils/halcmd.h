@@ -8,6 +8,7 @@
 #define HC_MAX_TOKENS 32
 #define HC_LINE_MAX 2048
 #define HC_VARNAME_MAX 127
+#define HC_PHYS_LINE_MAX (1024 * 1024)  /* longest physical line read from a file */
 
 /* Global options and state of one halcmd run. */
 typedef struct {
@@ -57,6 +58,15 @@ int hc_process_line(char *line);
 int hc_run_tokens(int argc, char *argv[]);
 /* Run lines from a stream; continuation enables backslash joining. */
 int hc_run_stream(FILE *f, int continuation, int interactive);
+/* Open a HAL file; NULL with errno set, EISDIR for a directory. */
+FILE *hc_open_hal_file(const char *name);
+/* A growing NUL-terminated text (zero-initialise; free text when done). */
+typedef struct {
+    char *text;
+    size_t len, cap;
+} hc_text_t;
+/* Append n bytes of s; -1 (reported) when out of memory. */
+int hc_text_append(hc_text_t *t, const char *s, size_t n);
 /* Interactive readline loop (halcmd_interactive.c). */
 int hc_run_interactive(void);
 

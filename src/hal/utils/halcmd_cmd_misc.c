@@ -55,9 +55,9 @@ int hc_cmd_source(int argc, char *argv[])
         hc_error("source: files nested more than %d deep", HC_MAX_SOURCE_DEPTH);
         return -1;
     }
-    f = fopen(name, "r");
+    f = hc_open_hal_file(name);
     if (!f) {
-        fprintf(hc_stderr(), "Could not open hal file '%s': %s\n", name, strerror(errno));
+        hc_error("Could not open hal file '%s': %s", name, strerror(errno));
         return -1;
     }
     hc.file = name;

@@ -26,7 +26,7 @@ static void hc_sleep_ms(long ms)
     nanosleep(&ts, NULL);
 }
 
-/* Parse loadusr's own options; returns the index of the program or -1. */
+/* Parse loadusr's own options; returns the index of the program or -1 (reported). */
 static int hc_usr_options(int argc, char *argv[], hc_usr_opts_t *o)
 {
     char *av[HC_MAX_TOKENS + 2];
@@ -42,9 +42,19 @@ static int hc_usr_options(int argc, char *argv[], hc_usr_opts_t *o)
         else if (c == 'W') o->wait_ready = 1;
         else if (c == 'i') o->ignore_status = 1;
         else if (c == 'n') snprintf(o->name, sizeof o->name, "%s", optarg);
-        else return -1;
+        else if (optopt == 'n') {
+            hc_error("loadusr: option -n needs a component name");
+            return -1;
+        } else {
+            hc_error("loadusr: unknown option '-%c'", optopt);
+            return -1;
+        }
     }
-    return optind - 1 < argc ? optind - 1 : -1;
+    if (optind - 1 >= argc) {
+        hc_error("loadusr: no program given (usage: loadusr [-W] [-w] [-i] [-n name] program [args...])");
+        return -1;
+    }
+    return optind - 1;
 }
 
 /* Default component name: basename of prog without its last extension. */
@@ -168,7 +178,7 @@ int hc_cmd_waitusr(int argc, char *argv[])
         return -1;
     }
     while (hal_comp_by_name(argv[0], &info) == 0) {
-        if (info.pid > 0 && kill(info.pid, 0) < 0 && errno == ESRCH)
+        if (!info.owner_alive)
             break;
         waitpid(-1, NULL, WNOHANG);
         hc_sleep_ms(200);
@@ -176,12 +186,19 @@ int hc_cmd_waitusr(int argc, char *argv[])
     return 0;
 }
 
-/* Send SIGTERM to one user component's process (never to halcmd itself). */
+/* Send SIGTERM to one user component's process (never to halcmd itself); a component whose
+   process is gone (killed before it could leave HAL) is removed here instead. */
 static void hc_term_comp(const char *name)
 {
     hal_comp_info_t info;
     if (hal_comp_by_name(name, &info) < 0 || info.type != HAL_COMP_USER)
         return;
+    if (!info.owner_alive) {
+        if (hal_comp_remove_orphan(name) == 0)
+            hc_warning("component '%s': its process %d no longer exists; removed it from HAL",
+                       name, info.pid);
+        return;
+    }
     if (info.pid > 0 && info.pid != getpid())
         kill(info.pid, SIGTERM);
 }

@@ -42,35 +42,30 @@ static char **hc_rl_complete(const char *text, int start, int end)
 /* Read lines with readline until EOF or quit; backslash continues a line. */
 int hc_run_interactive(void)
 {
-    char pending[2 * HC_LINE_MAX];
-    size_t plen = 0;
-    int failed = 0, rc;
+    hc_text_t pending = {0};
+    int failed = 0, rc = 0;
     char *line;
     rl_readline_name = "halcmd";
     rl_attempted_completion_function = hc_rl_complete;
-    pending[0] = '\0';
-    while ((line = readline(plen ? "halcmd+: " : "halcmd: ")) != NULL) {
+    while ((line = readline(pending.len ? "halcmd+: " : "halcmd: ")) != NULL) {
         size_t n = strlen(line);
         hc.line++;
         if (n > 0)
             add_history(line);
         int more = n > 0 && line[n - 1] == '\\';
-        if (plen + n >= sizeof pending)
-            n = sizeof pending - plen - 1;
-        memcpy(pending + plen, line, n - (more ? 1 : 0));
-        plen += n - (more ? 1 : 0);
-        pending[plen] = '\0';
+        rc = hc_text_append(&pending, line, n - (more ? 1 : 0));
         free(line);
-        if (more)
+        if (rc == 0 && more)
             continue;
-        rc = hc_process_line(pending);
-        plen = 0;
-        pending[0] = '\0';
+        if (rc == 0)
+            rc = hc_process_line(pending.text);
+        pending.len = 0;
         if (rc == 1)
             break;
         if (rc < 0)
             failed = 1;
     }
+    free(pending.text);
     hc_cands_free(&hc_rl_cands);
     return failed ? -1 : 0;
 }

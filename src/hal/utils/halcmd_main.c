@@ -1,5 +1,6 @@
 /* halcmd_main.c: halcmd entry point: options, HAL attach, argv or file mode, exit status. */
 #include <errno.h>
+#include <getopt.h>
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -26,9 +27,10 @@ static void hc_on_signal(int sig)
 /* Parse the options; returns -1 on an unknown option. */
 static int hc_parse_options(int argc, char *argv[], hc_opts_t *o)
 {
+    static const struct option longopts[] = {{"help", no_argument, NULL, 'h'}, {NULL, 0, NULL, 0}};
     int c;
     o->msg_level = RTAPI_MSG_ERR;
-    while ((c = getopt(argc, argv, "+RCfi:kqQsvVhe")) != -1) {
+    while ((c = getopt_long(argc, argv, "+RCfi:kqQsvVhe", longopts, NULL)) != -1) {
         switch (c) {
         case 'R': o->release = 1; break;
         case 'C': o->complete = 1; break;
@@ -69,9 +71,9 @@ static int hc_run_file(const char *name)
     if (name)
         name = hc_resolve_lib(name, lib_path, sizeof lib_path);
     if (name) {
-        f = fopen(name, "r");
+        f = hc_open_hal_file(name);
         if (!f) {
-            fprintf(stderr, "Could not open command file '%s'\n", name);
+            fprintf(stderr, "Could not open command file '%s': %s\n", name, strerror(errno));
             return -2;
         }
     }

@@ -108,7 +108,8 @@ static char *hc_expand_ini(const char **pp)
 static int hc_append(char *out, size_t *len, size_t size, const char *text, size_t n)
 {
     if (*len + n >= size || *len + n > HC_LINE_MAX - 3) {
-        hc_error("Line too long.");
+        hc_error("Line too long: more than %d characters after comments and substitutions.",
+                 HC_LINE_MAX - 3);
         return -1;
     }
     memcpy(out + *len, text, n);

@@ -1,11 +1,11 @@
 /* halcmd_run.c: executes lines and token lists: quit, "name = value", arrows, counts, tilde. */
+#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
+#include <sys/stat.h>
 #include "halcmd.h"
-
-#define HC_RAW_LINE 1024
 
 /* Drop tokens that are exactly "=>", "<=" or "<=>"; returns the new count. */
 static int hc_remove_arrows(int argc, char *argv[])
@@ -112,52 +112,116 @@ static void hc_prompt(int interactive, int pending)
     fflush(stdout);
 }
 
-/* Append a physical line to the pending logical line; -1 when too long. */
-static int hc_join(char *pending, size_t *len, const char *text)
+/* Append n bytes to a growing text; -1 (reported) when memory runs out. */
+int hc_text_append(hc_text_t *t, const char *s, size_t n)
 {
-    size_t n = strlen(text);
-    if (*len + n >= 2 * HC_LINE_MAX) {
-        hc_error("Line too long.");
-        *len = 0;
+    if (t->len + n + 1 > t->cap) {
+        size_t cap = t->cap ? t->cap : 256;
+        while (cap < t->len + n + 1)
+            cap *= 2;
+        char *text = realloc(t->text, cap);
+        if (!text) {
+            hc_error("out of memory for a %zu byte line", t->len + n);
+            return -1;
+        }
+        t->text = text;
+        t->cap = cap;
+    }
+    if (n > 0)
+        memcpy(t->text + t->len, s, n);
+    t->len += n;
+    t->text[t->len] = '\0';
+    return 0;
+}
+
+/* Forget a text's content, keeping its storage. */
+static void hc_text_clear(hc_text_t *t)
+{
+    t->len = 0;
+    if (t->text)
+        t->text[0] = '\0';
+}
+
+/* Read one physical line (without its newline) into line. 1 = a line, 0 = end of file,
+   -1 = a NUL byte (reported), -2 = read error or a line longer than HC_PHYS_LINE_MAX (reported;
+   the rest of the file is not read, even with -k: an endless line would never end). */
+static int hc_read_line(FILE *f, hc_text_t *line)
+{
+    char chunk[256];
+    size_t n = 0, total = 0;
+    int c, nul = 0;
+    hc_text_clear(line);
+    while ((c = getc(f)) != EOF && c != '\n' && total <= HC_PHYS_LINE_MAX) {
+        nul |= c == '\0';
+        chunk[n++] = (char)c;
+        total++;
+        if (n == sizeof chunk) {
+            if (hc_text_append(line, chunk, n) < 0)
+                return -2;
+            n = 0;
+        }
+    }
+    if (ferror(f)) {
+        hc.line++;
+        hc_error("cannot read the file: %s", strerror(errno));
+        return -2;
+    }
+    if (c == EOF && total == 0)
+        return 0;
+    hc.line++;
+    if (total > HC_PHYS_LINE_MAX) {
+        hc_error("line is longer than %d bytes; not reading the rest of the file", HC_PHYS_LINE_MAX);
+        return -2;
+    }
+    if (n > 0 && hc_text_append(line, chunk, n) < 0)
+        return -2;
+    if (nul) {
+        hc_error("line contains a NUL byte; HAL files are text");
         return -1;
     }
-    memcpy(pending + *len, text, n + 1);
-    *len += n;
-    return 0;
+    return 1;
 }
 
 /* Run every line of f; stops at the first failure unless -k. 0 ok, -1 failed. */
 int hc_run_stream(FILE *f, int continuation, int interactive)
 {
-    char pending[2 * HC_LINE_MAX];
-    char raw[HC_RAW_LINE];
-    size_t plen = 0;
+    hc_text_t pending = {0}, raw = {0};
     int failed = 0, rc;
-    pending[0] = '\0';
     for (;;) {
-        hc_prompt(interactive, plen > 0);
-        if (!fgets(raw, sizeof raw, f))
+        hc_prompt(interactive, pending.len > 0);
+        rc = hc_read_line(f, &raw);
+        if (rc == 0)
             break;
-        hc.line++;
-        raw[strcspn(raw, "\n")] = '\0';
-        size_t n = strlen(raw);
-        int more = continuation && n > 0 && raw[n - 1] == '\\';
-        if (more)
-            raw[n - 1] = '\0';
-        rc = hc_join(pending, &plen, raw);
+        int more = rc > 0 && continuation && raw.len > 0 && raw.text[raw.len - 1] == '\\';
+        if (rc > 0)
+            rc = hc_text_append(&pending, raw.text, raw.len - (more ? 1 : 0));
         if (rc == 0 && more)
             continue;
         if (rc == 0)
-            rc = hc_process_line(pending);
-        plen = 0;
-        pending[0] = '\0';
+            rc = hc_process_line(pending.text);
+        hc_text_clear(&pending);
         if (rc == 1)
             break;
         if (rc < 0) {
             failed = 1;
-            if (!hc.keep_going)
+            if (!hc.keep_going || rc == -2)
                 break;
         }
     }
+    free(pending.text);
+    free(raw.text);
     return failed ? -1 : 0;
+}
+
+/* Open a HAL file for reading; NULL with errno set (EISDIR for a directory). */
+FILE *hc_open_hal_file(const char *name)
+{
+    struct stat st;
+    FILE *f = fopen(name, "r");
+    if (f && fstat(fileno(f), &st) == 0 && S_ISDIR(st.st_mode)) {
+        fclose(f);
+        errno = EISDIR;
+        return NULL;
+    }
+    return f;
 }

@@ -31,25 +31,22 @@ static void hc_save_comps(FILE *out)
     }
 }
 
-/* Print one alias command if aliased, with the section header before the first. */
-static void hc_save_alias(FILE *out, const char *kind, int *first, int oldname, const char *name)
+/* Print one alias command if aliased. */
+static void hc_save_alias(FILE *out, const char *kind, int oldname, const char *name)
 {
-    if (!oldname)
-        return;
-    if (*first)
-        fprintf(out, "# %s aliases\n", kind);
-    *first = 0;
-    fprintf(out, "alias %s %s %s\n", kind, halpr_original_name(oldname), name);
+    if (oldname)
+        fprintf(out, "alias %s %s %s\n", kind, halpr_original_name(oldname), name);
 }
 
-/* Print alias commands for aliased pins and params. */
+/* Print the pin and param alias sections (headers always, as LinuxCNC does). */
 static void hc_save_aliases(FILE *out)
 {
-    int first_pin = 1, first_param = 1;
+    fprintf(out, "# pin aliases\n");
     for (hal_pin_t *p = halpr_first_pin(); p; p = halpr_next_pin(p))
-        hc_save_alias(out, "pin", &first_pin, p->oldname, p->name);
+        hc_save_alias(out, "pin", p->oldname, p->name);
+    fprintf(out, "# param aliases\n");
     for (hal_param_t *p = halpr_first_param(); p; p = halpr_next_param(p))
-        hc_save_alias(out, "param", &first_param, p->oldname, p->name);
+        hc_save_alias(out, "param", p->oldname, p->name);
 }
 
 /* Print newsig lines (all signals, or only pinless ones). */

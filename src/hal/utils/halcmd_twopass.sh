@@ -4,6 +4,12 @@
 BINDIR=$(cd "$(dirname "$(readlink -f "$0")")" && pwd)
 TOP=$(dirname "$BINDIR")
 
+if [ "${1:-}" = --help ] || [ "${1:-}" = -h ]; then
+    echo "Usage: halcmd_twopass [halcmd options] file.ini"
+    echo "Runs the [HAL]HALFILE files of file.ini in two passes as [HAL]TWOPASS asks: every"
+    echo "loadrt/loadusr first (repeated loads of a module merged), then the other commands."
+    exit 0
+fi
 if [ $# -eq 0 ] || [ "${!#:0:1}" = "-" ]; then
     echo "Usage: halcmd_twopass [halcmd options] file.ini" >&2
     exit 1

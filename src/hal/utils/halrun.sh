@@ -24,6 +24,7 @@ TXT
 }
 
 HALCMD_OPTS=() FILE= INIFILE= INTERACTIVE=0 TCL=0 UNLOAD=0
+[ "${1:-}" = --help ] && { usage; exit 0; }
 while getopts ":ef:hi:kqsvIRQTUV" opt; do
     case "$opt" in
     e|k|q|s|v|R|Q|V) HALCMD_OPTS+=("-$opt") ;;

@@ -148,4 +148,10 @@ proc ::haltcl::main {arguments} {
 }
 
 fconfigure stdout -buffering line
+if {[lindex $argv 0] in {--help -h}} {
+    puts "Usage: haltcl \[-i INIFILE\] \[FILE.tcl \[args...\]\]"
+    puts "Tcl with the HAL commands (loadrt, net, setp, ...) as Tcl commands; with -i, INIFILE's"
+    puts "sections are Tcl arrays (\$::KINS(JOINTS)). Without FILE an interactive prompt reads commands."
+    exit 0
+}
 ::haltcl::main $argv

@@ -228,16 +228,16 @@ static void test_ports(struct pins *p)
     show("sets port 4", hal_set_s("port", HAL_PORT, &v));
     show("sets port again", hal_set_s("port", HAL_PORT, &v));
     value("port", 1);
-    printf("writable=%u readable=%u\n", hal_port_writable(*p->pin_out), hal_port_readable(*p->pin_in));
-    printf("write 4 bytes: %d\n", hal_port_write(*p->pin_out, "abcd", 4));
-    printf("write 3 bytes: %d\n", hal_port_write(*p->pin_out, "abc", 3));
-    printf("peek 2: %d %.2s readable=%u\n", hal_port_peek(*p->pin_in, buf, 2), buf, hal_port_readable(*p->pin_in));
-    printf("read 4: %d\n", hal_port_read(*p->pin_in, buf, 4));
-    printf("read 3: %d %.3s\n", hal_port_read(*p->pin_in, buf, 3), buf);
-    printf("write wraps: %d\n", hal_port_write(*p->pin_out, "xyz", 3));
-    printf("read wraps: %d %.3s\n", hal_port_read(*p->pin_in, buf, 3), buf);
+    printf("writable=%u readable=%u\n", hal_port_writable(p->pin_out), hal_port_readable(p->pin_in));
+    printf("write 4 bytes: %d\n", hal_port_write(p->pin_out, "abcd", 4));
+    printf("write 3 bytes: %d\n", hal_port_write(p->pin_out, "abc", 3));
+    printf("peek 2: %d %.2s readable=%u\n", hal_port_peek(p->pin_in, buf, 2), buf, hal_port_readable(p->pin_in));
+    printf("read 4: %d\n", hal_port_read(p->pin_in, buf, 4));
+    printf("read 3: %d %.3s\n", hal_port_read(p->pin_in, buf, 3), buf);
+    printf("write wraps: %d\n", hal_port_write(p->pin_out, "xyz", 3));
+    printf("read wraps: %d %.3s\n", hal_port_read(p->pin_in, buf, 3), buf);
     show("unlink p-in (port pin becomes empty)", hal_unlink("core.p-in"));
-    printf("unlinked port size=%u\n", hal_port_buffer_size(*p->pin_in));
+    printf("unlinked port size=%u\n", hal_port_buffer_size(p->pin_in));
 }
 
 /* Aliases: both names resolve, listing shows the alias in sorted order. */

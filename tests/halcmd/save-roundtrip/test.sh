@@ -27,5 +27,9 @@ done
 halcmd save bogus 2>&1
 halcmd save sig saved-sig.tmp && cat saved-sig.tmp
 halcmd save sig /nonexistent/dir/x 2>&1
+halcmd unalias pin second-and-in
+halcmd unalias param sum-offset
+echo "> save alias, none left: the headers stay"
+halcmd save alias
 realtime stop
 rm -f ./*.tmp ./*.tmp.hal

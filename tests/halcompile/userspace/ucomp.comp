@@ -18,13 +18,15 @@ static void on_signal(int sig)
     done = 1;
 }
 
-/* Show the arguments left after count=/names= were removed. */
+/* Show the arguments left after count=/names= were removed, and names= as the names[] array. */
 void userinit(int argc, char **argv)
 {
     int i;
     printf("userinit argc=%d", argc);
     for (i = 1; i < argc; i++) printf(" argv[%d]=%s", i, argv[i]);
-    printf(" last=%s\n", argv[argc] ? "set" : "NULL");
+    printf(" last=%s", argv[argc] ? "set" : "NULL");
+    for (i = 0; i < 16 && names[i]; i++) printf(" names[%d]=%s", i, names[i]);
+    printf("\n");
     fflush(stdout);
     signal(SIGTERM, on_signal);
     signal(SIGINT, on_signal);

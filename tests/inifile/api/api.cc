@@ -4,6 +4,7 @@
 
 #include <cerrno>
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 
 namespace {
@@ -95,20 +96,38 @@ void c_api(const char *path)
     printf("ini_open missing: %s\n", ini_open("no-such.ini") ? "handle" : "NULL");
 }
 
-// The LinuxCNC-style FILE* lookups.
-void file_api(const char *path)
+// LinuxCNC's path-based lookups.
+void path_api(const char *path)
 {
-    FILE *fp = fopen(path, "r");
+    char buf[64], tiny[3];
+    rtapi_s64 i = 0;
+    rtapi_u64 u = 0;
     int n = 0, st;
+    bool b = false;
     double d = 0;
-    printf("iniFind OTHER: %s\n", iniFind(fp, "OTHER", "LIST"));
-    st = iniFindInt(fp, "HEX", "INT", &n);
+    st = iniFindString(path, "OTHER", "LIST", buf, sizeof buf);
+    c_result("iniFindString OTHER", st, buf);
+    c_result("iniFindString too small (-ENOSPC)", iniFindString(path, "APP", NULL, tiny, sizeof tiny) == -ENOSPC, "");
+    st = iniFindSInt(path, "NEG", "INT", &i);
+    c_result("iniFindSInt NEG", st, std::to_string(i));
+    st = iniFindUInt(path, "MINUS1", "INT", &u);
+    c_result("iniFindUInt MINUS1", st, std::to_string(u));
+    st = iniFindInt(path, "HEX", "INT", &n);
     c_result("iniFindInt HEX", st, std::to_string(n));
-    st = iniFindInt(fp, "BIG", "INT", &n);
-    c_result("iniFindInt BIG", st, "");
-    st = iniFindDouble(fp, "PI", "REAL", &d);
+    c_result("iniFindInt BIG (-ENOENT)", iniFindInt(path, "BIG", "INT", &n) == -ENOENT, "");
+    st = iniFindDouble(path, "PI", "REAL", &d);
     c_result("iniFindDouble PI", st, std::to_string(d));
-    fclose(fp);
+    st = iniFindBool(path, "T3", "", &b);
+    c_result("iniFindBool T3", st, std::to_string(b));
+    c_result("iniFindBool missing section (-ENOENT)", iniFindBool(path, "T3", "NOPE", &b) == -ENOENT, "");
+    c_result("iniFindBool no file (-EINVAL)", iniFindBool("no-such.ini", "T3", NULL, &b) == -EINVAL, "");
+    c_result("iniFindString NULL tag (-EINVAL)", iniFindString(path, NULL, NULL, buf, sizeof buf) == -EINVAL, "");
+    setenv("HOME", "/home/x", 1);
+    st = TildeExpansion("~/a.ini", buf, sizeof buf);
+    c_result("TildeExpansion", st, buf);
+    c_result("TildeExpansion too long (-ENOSPC)", TildeExpansion("~/a.ini", tiny, sizeof tiny) == -ENOSPC, "");
+    unsetenv("HOME");
+    c_result("TildeExpansion no HOME (-ENOENT)", TildeExpansion("~/a.ini", buf, sizeof buf) == -ENOENT, "");
 }
 
 // Open failures: a syntax error and a missing file.
@@ -135,7 +154,7 @@ int main(int argc, char **argv)
     typed(ini);
     listing(ini);
     c_api(argv[1]);
-    file_api(argv[1]);
+    path_api(argv[1]);
     failures(argv[2]);
     return 0;
 }

@@ -1,4 +1,4 @@
-# lines: CRLF and CR-only line ends, trailing blanks, a missing final newline, NUL bytes, empty files.
+# lines: CRLF and CR-only line ends, trailing blanks, a missing final newline, NUL bytes, empty files, a BOM, endless input.
 . "$TEST_DIR/../lib.sh"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
@@ -15,3 +15,11 @@ q -ini blanks.ini -var X | od -An -c
 vars blanks.ini Y
 vars nul.ini X
 vars empty.ini X
+# a UTF-8 byte order mark at the start of a file (and of an included one) is skipped
+printf '\357\273\277[A]\nX = after bom\n#INCLUDE bom-inc.ini\n' > bom.ini
+printf '\357\273\277Y = included after bom\n' > bom-inc.ini
+vars bom.ini X Y
+# a device that never ends (or a huge file) is refused instead of read forever
+vars /dev/zero X
+printf '[A]\n#INCLUDE /dev/zero\n' > zero-inc.ini
+vars zero-inc.ini X

@@ -1,4 +1,4 @@
-// record_canon.hh: a Canon for unit tests that prints each call in rs274's text form (canon.md §3).
+// record_canon.hh: a Canon for unit tests that prints each call in rs274's text form (LinuxCNC rs274's output).
 #ifndef OPENEMC_TESTS_RECORD_CANON_HH
 #define OPENEMC_TESTS_RECORD_CANON_HH
 

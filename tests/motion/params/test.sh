@@ -1,5 +1,6 @@
 #!/bin/bash
-# motmod module parameters: every out-of-range value and bad combination refuses the load with its MOTION: text.
+# motmod module parameters: every out-of-range value and bad combination refuses the load with its
+# MOTION: text; a segment owned by a running motion-logger is refused too.
 log=$(mktemp)
 trap 'halrun -U >/dev/null 2>&1; rm -f "$log"' EXIT
 halrun -U >/dev/null 2>&1
@@ -41,3 +42,6 @@ try num_joints=16 num_spindles=8 num_dio=64 num_aio=64 num_misc_error=64
 halcmd unload trivkins >>"$log" 2>&1
 halcmd loadrt trivkins kinstype=both >>"$log" 2>&1
 try num_joints=3 num_extrajoints=1
+# a running motion-logger owns the motion segment: motmod refuses to take it over
+halcmd loadusr -W motion-logger /dev/null >>"$log" 2>&1
+try num_joints=3 | sed 's/(pid [0-9]*)/(pid N)/'

@@ -287,6 +287,200 @@ static void planner_type(void)
     tp_planner_destroy(tp);
 }
 
+/* A simulated spindle: speed follows the command (reversed on request) at a limited rate. */
+typedef struct spindle_sim {
+    double rps, revs, cmd;
+} spindle_sim_t;
+
+static void spindle_step(spindle_sim_t *sp, int reverse, tp_cycle_in_t *in)
+{
+    double want = reverse ? -sp->cmd : sp->cmd, rate = 200.0 * T;
+    sp->rps += fmax(-rate, fmin(rate, want - sp->rps));
+    sp->revs += sp->rps * T;
+    in->spindle[0].revs = sp->revs;
+    in->spindle[0].speed_rps = sp->rps;
+    in->spindle[0].speed_cmd_rps = sp->cmd;
+    in->spindle[0].at_speed = fabs(sp->rps - want) < 0.01;
+}
+
+/* G33: waits for at-speed and the index, then the Z move follows the spindle, 2 mm per rev. */
+static void spindle_position_sync(void)
+{
+    tp_planner_t *tp = machine(0.0);
+    tp_cycle_in_t in = inputs();
+    tp_cycle_out_t out;
+    spindle_sim_t sp = {0.0, 0.0, 2.0};
+    tp_planner_set_spindle_sync(tp, 0, 0.5, 0);
+    tp_segment_t a = move(0, 0, -3, 4.0, 1);
+    a.atspeed = 1;
+    a.enables = TP_ENABLE_FS;
+    tp_planner_add(tp, &a);
+    int armed_at = -1, index_at = -1, moving_at = -1, index_drop = -1;
+    double worst = 0.0, z0 = 0.0;
+    for (int k = 0; k < 20000; k++) {
+        spindle_step(&sp, 0, &in);
+        if (k == index_drop) {
+            in.spindle[0].index_enable = 0;
+            sp.revs = 0.0;              /* the encoder counts from the index */
+            in.spindle[0].revs = 0.0;
+            index_at = k;
+        }
+        tp_planner_run_cycle(tp, &in, &out);
+        if (out.arm_index[0] && armed_at < 0) {
+            armed_at = k;
+            in.spindle[0].index_enable = 1;
+            index_drop = k + 137;       /* the index comes round a little later */
+        }
+        if (moving_at < 0 && out.pos.tran.z < 0.0) {
+            moving_at = k;
+            z0 = 0.0;
+        }
+        if (moving_at > 0 && k > moving_at + 300 && out.pos.tran.z > -2.5)
+            worst = fmax(worst, fabs(-out.pos.tran.z - 0.5 * sp.revs - z0));
+        if (out.done)
+            break;
+    }
+    printf("G33: armed the index after at-speed %s, moved only after the index %s, "
+           "following error after the start-up below 0.001 %s, end Z %.6f\n",
+           armed_at > 0 ? "yes" : "no", moving_at >= index_at && index_at > 0 ? "yes" : "no",
+           worst < 1e-3 ? "yes" : "no", out.pos.tran.z);
+    tp_planner_destroy(tp);
+}
+
+/* G95-style velocity sync: the feed is spindle speed times units per revolution. */
+static void spindle_velocity_sync(void)
+{
+    tp_planner_t *tp = machine(0.0);
+    tp_cycle_in_t in = inputs();
+    tp_cycle_out_t out;
+    spindle_sim_t sp = {3.0, 0.0, 3.0};
+    tp_planner_set_spindle_sync(tp, 0, 0.5, 1);
+    tp_segment_t a = move(5, 0, 0, 4.0, 1);
+    tp_planner_add(tp, &a);
+    double peak = 0.0;
+    for (int k = 0; k < 20000; k++) {
+        spindle_step(&sp, 0, &in);
+        tp_planner_run_cycle(tp, &in, &out);
+        peak = fmax(peak, out.current_vel);
+        if (out.done)
+            break;
+    }
+    printf("velocity sync 3 rev/s x 0.5: peak %.3f\n", peak);
+    tp_planner_destroy(tp);
+}
+
+/* G33.1: tapping, reversing, retraction, final reversal, final placement back at the start. */
+static void rigid_tap(void)
+{
+    tp_planner_t *tp = machine(0.0);
+    tp_cycle_in_t in = inputs();
+    tp_cycle_out_t out;
+    spindle_sim_t sp = {5.0, 0.0, 5.0};
+    tp_segment_t a = move(0, 0, -2, 4.0, 1);
+    a.kind = TP_SEG_RIGID_TAP;
+    a.tap_uu_per_rev = 0.25;
+    tp_planner_add(tp, &a);
+    int last = -2, index_drop = -1;
+    double deepest = 0.0;
+    printf("rigid tap phases:");
+    for (int k = 0; k < 40000; k++) {
+        spindle_step(&sp, out.spindle_reverse[0], &in);
+        if (k == index_drop) {
+            in.spindle[0].index_enable = 0;
+            sp.revs = 0.0;
+            in.spindle[0].revs = 0.0;
+        }
+        tp_planner_run_cycle(tp, &in, &out);
+        if (out.arm_index[0]) {
+            in.spindle[0].index_enable = 1;
+            index_drop = k + 50;
+        }
+        if (out.rigid_tap_state != last) {
+            printf(" %d", out.rigid_tap_state);
+            last = out.rigid_tap_state;
+        }
+        deepest = fmin(deepest, out.pos.tran.z);
+        if (out.done)
+            break;
+    }
+    printf("; went past the depth %s; done at Z %.6f\n", deepest < -2.0 ? "yes" : "no", out.pos.tran.z);
+    tp_planner_destroy(tp);
+}
+
+/* A locking indexer: unlock, wait for is-unlocked, move, lock, wait before finishing. */
+static void locking_indexer(void)
+{
+    tp_planner_t *tp = machine(0.0);
+    tp_cycle_in_t in = inputs();
+    tp_cycle_out_t out;
+    tp_segment_t a = move(0, 0, 0, 40.0, 1);
+    a.ini_maxvel = 40.0;
+    a.end.a = 30.0;
+    a.motion_type = TP_MOTION_INDEXROTARY;
+    a.indexer_jnum = 3;
+    tp_planner_add(tp, &a);
+    int unlock_seen = -1, moved = -1, relock = -1, done = -1, delay = 0;
+    for (int k = 0; k < 20000; k++) {
+        tp_planner_run_cycle(tp, &in, &out);
+        if (out.unlock_joint == 3 && unlock_seen < 0)
+            unlock_seen = k;
+        if (out.unlock_joint == 3 && !in.indexer_unlocked && ++delay > 20)
+            in.indexer_unlocked = 1;
+        if (out.unlock_joint < 0 && unlock_seen >= 0 && in.indexer_unlocked) {
+            if (relock < 0)
+                relock = k;
+            if (k > relock + 20)
+                in.indexer_unlocked = 0;
+        }
+        if (moved < 0 && out.pos.a > 0.0)
+            moved = k;
+        if (out.done) {
+            done = k;
+            break;
+        }
+    }
+    printf("indexer: unlock asked %s, moved after unlocked %s, lock asked at the end %s, done after locked %s, A %.3f\n",
+           unlock_seen >= 0 ? "yes" : "no", moved > unlock_seen + 20 ? "yes" : "no", relock > moved ? "yes" : "no",
+           done > relock + 20 ? "yes" : "no", out.pos.a);
+    tp_planner_destroy(tp);
+}
+
+/* Reverse run: stop, go back along the executed path (through the corner), then forward to the end. */
+static void reverse_run(void)
+{
+    tp_planner_t *tp = machine(0.0);
+    tp_cycle_in_t in = inputs();
+    tp_cycle_out_t out;
+    tp_planner_set_term_cond(tp, TP_TERM_COND_BLEND, 0.01);
+    tp_segment_t a = move(3, 0, 0, 3.0, 1), b = move(3, 3, 0, 3.0, 2);
+    tp_planner_add(tp, &a);
+    tp_planner_add(tp, &b);
+    double ymax = 0.0, xmin_back = 1e9;
+    int back_line = 0, flag = 0, k;
+    for (k = 0; k < 20000; k++) {
+        if (k == 1500)
+            tp_planner_set_run_dir(tp, 1);
+        if (k == 3500)
+            tp_planner_set_run_dir(tp, 0);
+        tp_planner_run_cycle(tp, &in, &out);
+        if (k < 1500)
+            ymax = out.pos.tran.y;
+        if (k > 1500 && k < 3500) {
+            xmin_back = fmin(xmin_back, out.pos.tran.x);
+            flag |= out.reverse;
+            if (out.pos.tran.x < 2.5)
+                back_line = out.exec_id;
+        }
+        if (out.done)
+            break;
+    }
+    printf("reverse run: reversed flag %d, went back from Y %.2f through the corner to X below 2.5 %s "
+           "(line %d), forward again to the end (%.3f, %.3f) %s\n",
+           flag, ymax, xmin_back < 2.5 ? "yes" : "no", back_line, out.pos.tran.x, out.pos.tran.y,
+           out.done ? "done" : "not done");
+    tp_planner_destroy(tp);
+}
+
 int main(void)
 {
     exact_modes();
@@ -296,5 +490,10 @@ int main(void)
     abort_move();
     synced_io();
     planner_type();
+    spindle_position_sync();
+    spindle_velocity_sync();
+    rigid_tap();
+    locking_indexer();
+    reverse_run();
     return 0;
 }

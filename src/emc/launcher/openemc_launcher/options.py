@@ -73,7 +73,7 @@ def parse(argv):
         if word == "--":
             break
         letter = word[1]
-        if letter == "h":
+        if letter == "h" or word == "--help":
             sys.stdout.write(USAGE)
             sys.exit(0)
         if letter in VALUED:

@@ -242,8 +242,8 @@ void CompEngine::entry_arc(int line, const Pose &end, Vec2 center, int rotation)
 {
     Vec2 s2 = plane_point(ax_, tool_end_), e2 = plane_point(ax_, end);
     if (distance(s2, e2) <= radius_)
-        throw InterpError("Length of cutter compensation entry move is not greater than the "
-                          "tool radius");
+        throw InterpError("Radius of cutter compensation entry arc is not greater than the tool "
+                          "radius");
     double k = arc_side(rotation);
     if (k < 0 && distance(e2, center) <= radius_)
         throw InterpError("Tool radius not less than arc radius with comp");

@@ -1,9 +1,10 @@
-// canned_cycle.cc: one G73/G74/G81..G89 block: word checks, sticky words, positioning, repeats (gcode.md §9).
+// canned_cycle.cc: one G73/G74/G81..G89 block: word checks, sticky words, positioning, repeats (LinuxCNC's canned cycles).
 #include <cmath>
 #include <string>
 
 #include "../interp_hooks.hh"
 #include "cycle_bodies.hh"
+#include "../polar.hh"
 
 namespace cycles {
 
@@ -50,13 +51,6 @@ static int repeats(const Block &b)
     if (l == 0)
         throw InterpError("Cannot do zero repeats of cycle");
     return l;
-}
-
-// spindle the block selects with $ (default 0)
-static int spindle_of(const Block &b)
-{
-    int sp = b.has_dollar ? (int)std::lround(b.dollar) : 0;
-    return (sp >= 0 && sp < SPINDLE_COUNT) ? sp : 0;
 }
 
 // spindle direction checks of the tapping and boring cycles
@@ -139,9 +133,17 @@ static void check_pecks(int code, const Hole &h)
                           std::to_string((long)MAX_PECKS) + " pecks)");
 }
 
-// where hole n (0-based) is: G90 at the words (or current point), G91 stepping by them
+// where hole n (0-based) is: G90 at the words (or current point), G91 stepping by them;
+// polar words are applied again for every repeat (G91: around the origin)
 static void hole_position(const InterpState &s, const Block &b, const PlaneAxes &ax, Hole &h)
 {
+    if (b.has_polar_radius || b.has_polar_angle) {
+        if (s.plane != CANON_PLANE_XY) throw InterpError("Polar coordinates only in the XY plane");
+        h.a = s.current[AX_X];
+        h.b = s.current[AX_Y];
+        polar_point(b, s.distance_incremental, h.a, h.b);
+        return;
+    }
     char la = axis_letter(ax.aa), lb = axis_letter(ax.bb);
     if (s.distance_incremental) {
         h.a = s.current[ax.aa] + (b.word(la) ? axis_word(s, b, la) : 0);
@@ -196,8 +198,10 @@ void execute(InterpState &s, const Block &b, Canon &canon)
     check_rotary(b);
     repeats(b);
     bool same = s.cycle_last == code;
+    if (!same)
+        s.cycle_il_valid = false;
     Hole h;
-    h.spindle = spindle_of(b);
+    h.spindle = s.spindle_of(b);
     h.spindle_dir = s.spindle_dir[h.spindle];
     check_spindle(code, h.spindle_dir);
     dwell_and_peck(s, b, code, same, h);

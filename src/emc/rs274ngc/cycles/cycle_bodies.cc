@@ -1,4 +1,4 @@
-// cycle_bodies.cc: move sequences of the drilling, pecking, tapping and boring cycles (gcode.md §9).
+// cycle_bodies.cc: move sequences of the drilling, pecking, tapping and boring cycles (LinuxCNC's canned cycles).
 #include "cycle_bodies.hh"
 
 namespace cycles {

@@ -1,4 +1,4 @@
-// cycle_g76.cc: G76 multi-pass threading cycle in the XZ plane (gcode.md §9 "G76 threading").
+// cycle_g76.cc: G76 multi-pass threading cycle in the XZ plane (LinuxCNC's G76).
 #include <cmath>
 #include <string>
 
@@ -35,6 +35,8 @@ static double required(const Block &b, char c)
 }
 
 // read and check the words of a G76 block
+static void read_thread_options(const Block &b, Thread &t);
+
 static Thread read_thread(const InterpState &s, const Block &b)
 {
     Thread t;
@@ -56,8 +58,16 @@ static Thread read_thread(const InterpState &s, const Block &b)
         throw InterpError("In G76, K must be greater than J");
     if (t.pitch <= 0)
         throw InterpError("In G76, P must be greater than 0");
+    read_thread_options(b, t);
+    t.spindle = s.spindle_of(b);
+    return t;
+}
+
+// the optional words of G76: R degression, Q angle, H spring passes, E L taper
+static void read_thread_options(const Block &b, Thread &t)
+{
     t.degression = b.word('r') ? std::max(b.value('r'), 1.0) : 1.0;
-    t.tan_angle = b.word('q') ? std::tan(b.value('q') * M_PI / 180.0) : 0.0;
+    t.tan_angle = b.word('q') ? std::tan(b.value('q') * (M_PI / 180.0)) : 0.0;
     t.spring_passes = b.word('h') ? (int)std::lround(b.value('h')) : 0;
     if (t.spring_passes < 0 || t.spring_passes > MAX_PASSES)
         throw InterpError("In G76, H must be 0 to " + std::to_string(MAX_PASSES));
@@ -65,10 +75,6 @@ static Thread read_thread(const InterpState &s, const Block &b)
     t.taper_ends = b.word('l') ? (int)std::lround(b.value('l')) : 0;
     if (t.taper_length < 0 || t.taper_ends < 0 || t.taper_ends > 3)
         throw InterpError("In G76, E must not be negative and L must be 0 to 3");
-    t.spindle = b.has_dollar ? (int)std::lround(b.dollar) : 0;
-    if (t.spindle < 0 || t.spindle >= SPINDLE_COUNT)
-        t.spindle = 0;
-    return t;
 }
 
 // one threading pass at `depth` beyond the peak

@@ -1,4 +1,5 @@
-// lathe_cycles.cc: G71/G72 roughing and G70 finishing of a monotonic profile subroutine (XZ plane).
+// lathe_cycles.cc: G71/G72 roughing (.1 without pockets, .2 pockets only) and G70 finishing of a
+// profile subroutine, worked in a frame where the cut runs along +u and levels step down in v.
 #include <cmath>
 #include <string>
 
@@ -8,199 +9,369 @@
 
 namespace cycles {
 
-// most roughing levels one block may cut; more means I is far too small for the stock
-static const int MAX_LEVELS = 10000;
+namespace {
 
-// Where a cycle starts and which axis it steps along: X for G71 and G70, Z for G72.
-struct LatheJob {
-    LathePoint start;      // X Z words, else the current point
-    bool step_x = true;    // levels step along X (turning) or Z (facing)
-    std::string who;       // "G71" in error texts
+// most roughing levels one block may cut; more means I is far too small for the stock
+constexpr long MAX_LEVELS = 100000;
+// level and point tolerance
+constexpr double EPS = 1e-9;
+
+// Maps the ZX plane to the cycle frame: (c, s) = (z, x) or (x, z) when swapped (G72), then
+// u = cdir * c and v = vsign * s.
+struct Frame {
+    bool swap = false;
+    double cdir = 1, vsign = 1;
+
+    // (z, x) to (u, v)
+    Pt to(Pt zx) const
+    {
+        Pt cs = swap ? Pt{zx.v, zx.u} : zx;
+        return {cdir * cs.u, vsign * cs.v};
+    }
+    // (u, v) to (z, x)
+    Pt back(Pt uv) const
+    {
+        Pt cs{uv.u / cdir, uv.v / vsign};
+        return swap ? Pt{cs.v, cs.u} : cs;
+    }
+    // true when the map reverses the sense of rotation
+    bool flips() const { return swap != ((cdir < 0) != (vsign < 0)); }
+    // an element of the (z, x) plane in the cycle frame
+    Elem to(const Elem &e) const
+    {
+        return Elem{e.arc, to(e.a), to(e.b), to(e.c), e.ccw != flips(), e.id, e.r};
+    }
 };
 
+// The words and state of one cycle block.
+struct Job {
+    int code;                 // motion code x10: 700, 710..712, 720..722
+    std::string who;          // "G71.1" in messages
+    Pt start;                 // start point (z, x)
+    bool moved;               // X or Z given: rapid there first
+    double d, e, inc, retract;
+    long passes;
+};
+
+// Emits the moves of a cycle given in the cycle frame.
+class Emitter {
+public:
+    Emitter(CycleMoves &mv, const Frame &f) : mv_(mv), f_(f) {}
+    // rapid to p
+    void rapid(Pt p)
+    {
+        Pt zx = f_.back(p);
+        mv_.rapid(zx.u, zx.v, mv_.cur(AX_Y));
+        at_ = p;
+    }
+    // feed to p
+    void feed(Pt p)
+    {
+        Pt zx = f_.back(p);
+        mv_.feed(zx.u, zx.v, mv_.cur(AX_Y));
+        at_ = p;
+    }
+    // move along element e (a line or an arc)
+    void along(const Elem &e)
+    {
+        if (!e.arc) return feed(e.b);
+        Pt b = f_.back(e.b), c = f_.back(e.c);
+        mv_.arc(b.u, b.v, c.u, c.v, (e.ccw != f_.flips()) ? 1 : -1);
+        at_ = e.b;
+    }
+    // the current point in the cycle frame
+    Pt at() const { return at_; }
+
+private:
+    CycleMoves &mv_;
+    const Frame &f_;
+    Pt at_;
+};
+
+// A place on the pieces of a path: piece index and parameter.
+struct Place {
+    size_t k = 0;
+    double t = 0;
+};
+
+// true when piece e runs downwards in v
+bool descends(const Elem &e)
+{
+    return e.b.v < e.a.v - EPS;
+}
+
+// true when piece e runs upwards in v
+bool rises(const Elem &e)
+{
+    return e.b.v > e.a.v + EPS;
+}
+
 // value of word c, or `def` when absent
-static double word_or(const Block &b, char c, double def)
+double word_or(const Block &b, char c, double def)
 {
     return b.word(c) ? b.value(c) : def;
 }
 
-// coordinate along the step axis
-static double step_of(const LatheJob &j, LathePoint p)
+// the first place at or after `from` where the path crosses level v going up (down when !up)
+bool find_crossing(const std::vector<Elem> &p, Place from, double v, bool up, Place &at)
 {
-    return j.step_x ? p.x : p.z;
+    for (size_t k = from.k; k < p.size(); k++) {
+        double t;
+        if (!(up ? rises(p[k]) : descends(p[k])) || !level_param(p[k], v, t)) continue;
+        if (k == from.k && t < from.t - EPS) continue;
+        at = {k, t};
+        return true;
+    }
+    return false;
 }
 
-// coordinate along the cut axis
-static double cut_of(const LatheJob &j, LathePoint p)
+// lowest v of the pocket that starts at piece k (until the path is back at level `top`)
+double pocket_bottom(const std::vector<Elem> &p, size_t k, double top)
 {
-    return j.step_x ? p.z : p.x;
+    double low = top;
+    for (; k < p.size(); k++) {
+        low = std::fmin(low, std::fmin(p[k].a.v, p[k].b.v));
+        if (rises(p[k]) && p[k].b.v >= top - EPS) break;
+    }
+    return low;
 }
 
-// point from step-axis and cut-axis coordinates
-static LathePoint point_of(const LatheJob &j, double step, double cut)
+// follow the path from `from` to `to` (to after from); the pieces of one arc make one move
+void follow(Emitter &em, const std::vector<Elem> &p, Place from, Place to)
 {
-    return j.step_x ? LathePoint{step, cut} : LathePoint{cut, step};
+    for (size_t k = from.k; k <= to.k && k < p.size(); k++) {
+        double t0 = k == from.k ? from.t : 0, t1 = k == to.k ? to.t : 1;
+        Elem part = elem_part(p[k], t0, t1);
+        while (part.arc && t1 >= 1 && k < to.k && p[k + 1].id == p[k].id && p[k + 1].arc) {
+            k++;
+            t1 = k == to.k ? to.t : 1;
+            part.b = elem_point(p[k], t1);
+        }
+        if (elem_length(part) > 1e-10 || dist(part.a, part.b) > 1e-10) em.along(part);
+    }
 }
 
-// rapid or feed to a point of the XZ plane (axes a = z, b = x of the cycle moves)
-static void go(CycleMoves &mv, LathePoint p, bool feed)
+// One roughing level of a pocket: from wall point w along level v to where the path rises back
+// through it, retract diagonally by at most R, return and feed back to the wall.
+bool pocket_level(Emitter &em, const std::vector<Elem> &p, Place w, double v, double r)
 {
-    if (feed)
-        mv.feed(p.z, p.x, mv.cur(AX_Y));
-    else
-        mv.rapid(p.z, p.x, mv.cur(AX_Y));
+    Place h;
+    if (!find_crossing(p, w, v, true, h)) return false;
+    Pt wall = elem_point(p[w.k], w.t), hit = elem_point(p[h.k], h.t);
+    em.feed({hit.u, v});
+    double rr = std::fmin(r, (hit.u - wall.u) / 2);
+    em.rapid({hit.u - rr, v + rr});
+    em.rapid({wall.u + rr, v + rr});
+    em.feed({wall.u, v});
+    return true;
 }
 
-// the profile of word Q, checked to be monotonic along both axes
-static Profile load_profile(const InterpState &s, const Block &b, ProfileSource &src,
-                            const std::string &who)
+// Rough the pocket whose top is the start of descending piece k, then follow the path out of
+// it; returns the place where the path is back at the top level (or its end).
+Place rough_pocket(Emitter &em, const std::vector<Elem> &p, size_t k, const Job &j)
 {
-    if (!b.word('q'))
-        throw InterpError("Q word missing with g" + who.substr(1));
-    std::string name = std::to_string(std::lround(b.value('q')));
-    Profile p = read_profile(s, src.sub_blocks(name), who);
-    if (!profile_monotonic(p, true) || !profile_monotonic(p, false))
-        throw InterpError(who + ": the profile in o" + name +
-                          " must not turn back in X or Z (pockets are not supported)");
-    return p;
+    double top = p[k].a.v, bottom = pocket_bottom(p, k, top);
+    Place w{k, 0};
+    for (double v = top; v > bottom + EPS; v -= j.inc) {
+        Place next;
+        if (v < top && !find_crossing(p, w, v, false, next)) break;
+        if (v < top) {
+            follow(em, p, w, next);
+            w = next;
+        }
+        if (!pocket_level(em, p, w, v, j.retract)) break;
+    }
+    Place out;
+    if (!find_crossing(p, w, top, true, out)) out = {p.size() - 1, 1};
+    follow(em, p, w, Place{out.k, 1});
+    return Place{out.k + 1, 0};
 }
 
-// one contour pass along the profile moved by `shift` on the step axis, from and back to the start
-static void contour_pass(CycleMoves &mv, const LatheJob &j, const Profile &p, double shift)
+// Walk the path from its start: follow it, and at each pocket top rough the pocket (G71/G72
+// and .2).
+void walk(Emitter &em, const std::vector<Elem> &p, const Job &j)
 {
-    LathePoint first = p.start();
-    double s0 = step_of(j, first) + shift;
-    go(mv, point_of(j, s0, cut_of(j, j.start)), false);
-    go(mv, point_of(j, s0, cut_of(j, first)), true);
-    for (const ProfileSeg &g : p.segs) {
-        LathePoint to = point_of(j, step_of(j, g.to) + shift, cut_of(j, g.to));
-        if (!g.arc) {
-            go(mv, to, true);
+    Place at;
+    while (at.k < p.size()) {
+        if (descends(p[at.k]) && at.t < EPS) {
+            at = rough_pocket(em, p, at.k, j);
             continue;
         }
-        LathePoint c = point_of(j, step_of(j, g.center) + shift, cut_of(j, g.center));
-        mv.arc(to.z, to.x, c.z, c.x, g.rotation);
-    }
-    LathePoint here{mv.cur(AX_X), mv.cur(AX_Z)};
-    go(mv, point_of(j, step_of(j, j.start), cut_of(j, here)), false);
-    go(mv, j.start, false);
-}
-
-// the step direction from the start point toward the profile; errors when the start is inside it
-static double step_direction(const LatheJob &j, const Profile &p)
-{
-    double lo, hi;
-    profile_range(p, j.step_x, lo, hi);
-    double s = step_of(j, j.start);
-    if (s >= hi)
-        return -1;
-    if (s <= lo)
-        return 1;
-    throw InterpError(j.who + ": the start point must be outside the profile in " +
-                      (j.step_x ? "X" : "Z"));
-}
-
-// roughing levels: cut along the cut axis from the start to the profile (or its near end)
-static void rough_levels(CycleMoves &mv, const LatheJob &j, const Profile &p, double dir,
-                         double allowance, double depth, double retract)
-{
-    double lo, hi;
-    profile_range(p, j.step_x, lo, hi);
-    double far = (dir < 0 ? lo : hi) - dir * allowance;
-    double s0 = step_of(j, j.start), c0 = cut_of(j, j.start);
-    LathePoint near_end = std::fabs(step_of(j, p.end()) - s0) < std::fabs(step_of(j, p.start()) - s0)
-        ? p.end() : p.start();
-    if ((far - s0) * dir / depth > MAX_LEVELS)
-        throw InterpError(j.who + ": I is too small for the stock to remove (more than " +
-                          std::to_string(MAX_LEVELS) + " passes)");
-    for (int k = 1;; k++) {
-        double level = s0 + dir * depth * k;
-        if ((far - level) * dir <= 1e-9)
-            break;
-        double hit;
-        if (!profile_cross(p, j.step_x, level + dir * allowance, hit))
-            hit = cut_of(j, near_end);
-        go(mv, point_of(j, level, c0), false);
-        go(mv, point_of(j, level, hit), true);
-        go(mv, point_of(j, level - dir * retract, hit), false);
-        go(mv, point_of(j, level - dir * retract, c0), false);
+        follow(em, p, at, Place{at.k, 1});
+        at = {at.k + 1, 0};
     }
 }
 
-// start point from the X Z words (rapid there first) or the current point
-static LatheJob start_job(const InterpState &s, const Block &b, bool step_x,
-                          const std::string &who)
+// true when place `at` is the start of its path element (not inside it)
+bool element_start(const std::vector<Elem> &p, Place at)
 {
-    if (s.plane != CANON_PLANE_XZ)
-        throw InterpError(who + " is only allowed in the XZ plane (G18)");
-    LatheJob j;
-    j.step_x = step_x;
-    j.who = who;
+    bool first = at.k == 0 || p[at.k - 1].id != p[at.k].id;
+    return first && dist(elem_point(p[at.k], at.t), p[at.k].a) < 1e-7;
+}
+
+// The final contour of G71.1/G72.1: pockets bridged by a straight cut at their top level. Each
+// path element starts with a feed to its start point; a bridge joins the elements it cuts into.
+void walk_bridged(Emitter &em, const std::vector<Elem> &p)
+{
+    Place at;
+    bool fresh = true;
+    while (at.k < p.size()) {
+        const Elem &e = p[at.k];
+        Place h;
+        bool top = descends(e) && at.t < EPS;
+        if (top && find_crossing(p, at, e.a.v, true, h)) {
+            if (element_start(p, at)) em.feed(e.a);
+            em.feed(elem_point(p[h.k], h.t));
+            fresh = element_start(p, h);
+            at = h;
+            continue;
+        }
+        if (fresh && element_start(p, at)) em.feed(e.a);
+        follow(em, p, at, Place{at.k, 1});
+        at = {at.k + 1, 0};
+        fresh = true;
+    }
+}
+
+// The roughing levels outside the profile: from the start level down, each cut from the start
+// along +u to the path, a diagonal retract by R and a rapid back.
+void rough_levels(Emitter &em, const std::vector<Elem> &p, Pt start, const Job &j)
+{
+    double stop = p.front().a.v;
+    long n = 0;
+    for (double v = start.v; v > stop + EPS; v -= j.inc) {
+        if (++n > MAX_LEVELS)
+            throw InterpError(j.who + ": I is too small for the stock to remove");
+        Place h;
+        if (!find_crossing(p, Place{}, v, true, h)) break;
+        double hit = elem_point(p[h.k], h.t).u;
+        em.rapid({start.u, v});
+        em.feed({hit, v});
+        double rr = std::fmin(j.retract, (hit - start.u) / 2);
+        em.rapid({hit - rr, v + rr});
+        em.rapid({start.u + rr, v + rr});
+        em.rapid({start.u, v});
+    }
+}
+
+// the profile of word Q
+Profile load_profile(const InterpState &s, const Block &b, ProfileSource &src, const Job &j)
+{
+    if (!b.word('q')) throw InterpError("Q word missing with " + j.who);
+    std::string name = std::to_string(std::lround(b.value('q')));
+    return read_profile(s, src.sub_blocks(name), j.start, j.who);
+}
+
+// the frame of a cycle: the cut runs from the profile start to its end along +u, the start
+// point lies on the +v side of the profile start
+Frame make_frame(const Profile &prof, const Job &j)
+{
+    Frame f;
+    f.swap = j.code >= 720;
+    Pt a = prof.start, z = prof.elems.back().b, s = j.start;
+    double c0 = f.swap ? a.v : a.u, c1 = f.swap ? z.v : z.u;
+    f.cdir = c1 >= c0 ? 1 : -1;
+    double s0 = f.swap ? a.u : a.v, sv = f.swap ? s.u : s.v;
+    f.vsign = sv >= s0 ? 1 : -1;
+    return f;
+}
+
+// the profile in the cycle frame; monotonic along the cut; closed to the start level for roughing
+std::vector<Elem> frame_path(const Profile &prof, const Frame &f, const Job &j, double v0)
+{
+    std::vector<Elem> path;
+    for (const Elem &e : prof.elems) path.push_back(f.to(e));
+    for (const Elem &e : split_monotonic(path))
+        if (e.b.u < e.a.u - 1e-7)
+            throw InterpError(j.who + ": the profile must be monotonic in " +
+                              (f.swap ? "X" : "Z"));
+    Pt end = path.back().b;
+    if (j.code != 700 && end.v < v0 - EPS) path.push_back(Elem{false, end, {end.u, v0}, {}, false});
+    return path;
+}
+
+// G71/G72 and their .1/.2 forms
+void rough(Emitter &em, const std::vector<Elem> &path, Pt start, const Job &j)
+{
+    int sub = j.code % 10;
+    std::vector<Elem> whole = offset_envelope(path, j.d);
+    if (whole.empty()) throw InterpError(j.who + ": the profile is empty");
+    for (size_t i = 0; i < whole.size(); i++) whole[i].id = (int)i;
+    std::vector<Elem> env = split_monotonic(whole);
+    Pt ps = env.front().a;
+    em.rapid(start);
+    if (sub == 2) {
+        em.rapid(ps);
+        return walk(em, env, j);
+    }
+    rough_levels(em, env, start, j);
+    bool above = em.at().v > ps.v + EPS;
+    if (above) em.rapid(ps);
+    if (sub == 1) return walk_bridged(em, env);
+    if (!above) em.feed(ps);
+    walk(em, env, j);
+}
+
+// G70: P passes from distance D down to E (the last on E), each from the start point
+void finish(Emitter &em, const std::vector<Elem> &path, Pt start, const Job &j)
+{
+    if (j.passes < 1 || j.passes > MAX_LEVELS)
+        throw InterpError("G70: P must be 1 to " + std::to_string(MAX_LEVELS));
+    em.rapid(start);
+    for (long k = j.passes; k >= 1; k--) {
+        double d = (k - 1) * (j.d - j.e) / j.passes + j.e;
+        std::vector<Elem> env = offset_envelope(path, d);
+        if (env.empty()) throw InterpError("G70: the profile is empty");
+        if (k < j.passes) em.rapid(start);
+        em.rapid(env.front().a);
+        for (const Elem &e : env) em.along(e);
+    }
+}
+
+// the words of a cycle block
+Job read_job(const InterpState &s, const Block &b, int code)
+{
+    Job j;
+    j.code = code;
+    j.who = "G" + std::to_string(code / 10) + (code % 10 ? "." + std::to_string(code % 10) : "");
     double scale = s.lathe_diameter ? 0.5 : 1.0;
-    j.start.x = b.word('x') ? b.value('x') * scale : s.current[AX_X];
-    j.start.z = b.word('z') ? b.value('z') : s.current[AX_Z];
-    if (s.distance_incremental) {
-        j.start.x = s.current[AX_X] + (b.word('x') ? b.value('x') * scale : 0);
-        j.start.z = s.current[AX_Z] + word_or(b, 'z', 0);
-    }
+    Pt cur{s.current[AX_Z], s.current[AX_X]};
+    j.moved = b.word('x') || b.word('z');
+    j.start = cur;
+    if (b.word('x')) j.start.v = (s.distance_incremental ? cur.v : 0) + b.value('x') * scale;
+    if (b.word('z')) j.start.u = (s.distance_incremental ? cur.u : 0) + b.value('z');
+    j.d = word_or(b, 'd', 0);
+    j.e = word_or(b, 'e', 0);
+    j.inc = word_or(b, 'i', 1.0);
+    j.retract = word_or(b, 'r', 0.5);
+    j.passes = b.word('p') ? std::lround(b.value('p')) : 1;
+    if (j.d < 0 || j.e < 0) throw InterpError(j.who + ": D and E must not be negative");
+    if (code != 700 && j.inc <= 0) throw InterpError(j.who + ": I (cutting increment) must be greater than 0");
+    if (code != 700 && j.retract < 0) throw InterpError(j.who + ": R (retract distance) must not be negative");
     return j;
 }
 
-// G71/G72: roughing levels, then one contour pass leaving D on the step axis
-static void rough(InterpState &s, const Block &b, Canon &canon, ProfileSource &src, bool step_x)
-{
-    std::string who = step_x ? "G71" : "G72";
-    CycleMoves mv(s, canon, plane_axes(CANON_PLANE_XZ), s.sequence_number);
-    LatheJob j = start_job(s, b, step_x, who);
-    double depth = word_or(b, 'i', 0), allowance = word_or(b, 'd', 0);
-    if (!b.word('i') || depth <= 0)
-        throw InterpError(who + ": I (depth of each pass) must be given and greater than 0");
-    if (allowance < 0)
-        throw InterpError(who + ": D (finishing allowance) must not be negative");
-    double retract = word_or(b, 'r', depth / 2);
-    if (retract <= 0)
-        throw InterpError(who + ": R (retract distance) must be greater than 0");
-    Profile p = load_profile(s, b, src, who);
-    double dir = step_direction(j, p);
-    if (b.word('x') || b.word('z'))
-        go(mv, j.start, false);
-    rough_levels(mv, j, p, dir, allowance, depth, retract);
-    contour_pass(mv, j, p, -dir * allowance);
-}
+} // namespace
 
-// G70: P contour passes from distance D down to distance E from the profile
-static void finish(InterpState &s, const Block &b, Canon &canon, ProfileSource &src)
-{
-    CycleMoves mv(s, canon, plane_axes(CANON_PLANE_XZ), s.sequence_number);
-    LatheJob j = start_job(s, b, true, "G70");
-    double from = word_or(b, 'd', 0), to = word_or(b, 'e', 0);
-    long passes = b.word('p') ? std::lround(b.value('p')) : 1;
-    if (from < 0 || to < 0 || passes < 1 || passes > MAX_LEVELS)
-        throw InterpError("G70: D and E must not be negative and P must be 1 to " +
-                          std::to_string(MAX_LEVELS));
-    Profile p = load_profile(s, b, src, "G70");
-    double dir = step_direction(j, p);
-    if (b.word('x') || b.word('z'))
-        go(mv, j.start, false);
-    for (long k = 1; k <= passes; k++)
-        contour_pass(mv, j, p, -dir * (from + (to - from) * k / passes));
-}
-
-// G70 G71 G72 (G71.1/.2 and G72.1/.2 pocket variants are refused)
+// G70 G71 G71.1 G71.2 G72 G72.1 G72.2
 void execute_lathe(InterpState &s, const Block &b, Canon &canon, ProfileSource &src)
 {
     int code = s.motion_mode;
+    if (s.plane != CANON_PLANE_XZ)
+        throw InterpError("G" + std::to_string(code / 10) + " is only allowed in the XZ plane (G18)");
     if (s.feed_mode == FEED_INVERSE_TIME)
         throw InterpError("Cannot use inverse time feed with canned cycles");
-    if (s.feed_rate <= 0)
-        throw InterpError("Cannot feed with zero feed rate");
-    if (code == 700)
-        finish(s, b, canon, src);
-    else if (code == 710 || code == 720)
-        rough(s, b, canon, src, code == 710);
-    else
-        throw InterpError("G" + std::to_string(code / 10) + "." + std::to_string(code % 10) +
-                          " is not supported (use G" + std::to_string(code / 10) + ")");
+    if (s.feed_rate <= 0) throw InterpError("Cannot feed with zero feed rate");
+    Job j = read_job(s, b, code);
+    Profile prof = load_profile(s, b, src, j);
+    Frame f = make_frame(prof, j);
+    CycleMoves mv(s, canon, plane_axes(CANON_PLANE_XZ), s.sequence_number);
+    Emitter em(mv, f);
+    Pt start = f.to(j.start);
+    std::vector<Elem> path = frame_path(prof, f, j, start.v);
+    if (j.moved) em.rapid(start);
+    if (code == 700) finish(em, path, start, j);
+    else rough(em, path, start, j);
 }
 
 }  // namespace cycles

@@ -1,202 +1,133 @@
-// lathe_profile.cc: reading and querying the profile subroutine of the lathe cycles G70/G71/G72.
+// lathe_profile.cc: reading the profile subroutine of the lathe cycles G70/G71/G72 into lines
+// and arcs of the ZX plane (X and U halved in diameter mode, U/W incremental, A fillets, C chamfers).
 #include "lathe_profile.hh"
 
 #include <cmath>
 
 namespace cycles {
 
-// angle of point p about center c in the (z, x) frame of the XZ plane
-static double frame_angle(LathePoint c, LathePoint p)
-{
-    return std::atan2(p.x - c.x, p.z - c.z);
-}
+namespace {
 
-// center of an R-format arc from a to b; rotation +1 counterclockwise in (z, x)
-static LathePoint center_from_radius(LathePoint a, LathePoint b, double r, int rotation,
-                                     const std::string &who)
+// moves shorter than this are dropped (the next move starts where the previous one ended)
+constexpr double MIN_MOVE = 1e-4;
+
+// The modal state of the profile blocks while they are read.
+struct Reader {
+    const InterpState &s;
+    std::string who;
+    bool incremental, ijk_absolute;
+    int motion = 10;
+    Pt cur;
+};
+
+// center of an R-format arc from a to b; ccw in the (z, x) frame
+Pt center_from_radius(Pt a, Pt b, double r, bool ccw, const std::string &who)
 {
-    double dz = b.z - a.z, dx = b.x - a.x;
-    double chord = std::hypot(dz, dx);
-    double half = chord / 2;
+    double chord = dist(a, b), half = chord / 2;
     if (chord == 0 || std::fabs(r) < half - 1e-6)
         throw InterpError(who + ": profile arc radius too small to reach its end point");
-    double off = std::sqrt(std::max(r * r - half * half, 0.0));
-    double side = (rotation > 0) == (r > 0) ? 1.0 : -1.0;  // center left of the chord for CCW
-    LathePoint c;
-    c.z = (a.z + b.z) / 2 - side * off * dx / chord;
-    c.x = (a.x + b.x) / 2 + side * off * dz / chord;
-    return c;
+    double off = std::sqrt(std::fmax(r * r - half * half, 0.0));
+    double side = (ccw == (r > 0)) ? 1.0 : -1.0;  // the short arc's center is left of the chord when ccw
+    return {(a.u + b.u) / 2 - side * off * (b.v - a.v) / chord,
+            (a.v + b.v) / 2 + side * off * (b.u - a.u) / chord};
 }
 
-// end point of one profile block: absolute or incremental words, X halved in diameter mode
-static LathePoint block_end(const InterpState &s, const Block &b, LathePoint cur, bool incremental)
+// end point of a move: X/Z absolute or incremental, U/W always incremental, X and U halved in G7
+Pt move_end(const Reader &r, const Block &b)
 {
-    LathePoint p = cur;
-    double scale = s.lathe_diameter ? 0.5 : 1.0;
-    if (b.word('x'))
-        p.x = incremental ? cur.x + b.value('x') * scale : b.value('x') * scale;
-    if (b.word('z'))
-        p.z = incremental ? cur.z + b.value('z') : b.value('z');
+    double scale = r.s.lathe_diameter ? 0.5 : 1.0;
+    Pt p = r.cur;
+    if (b.word('x')) p.v = r.incremental ? r.cur.v + b.value('x') * scale : b.value('x') * scale;
+    if (b.word('z')) p.u = r.incremental ? r.cur.u + b.value('z') : b.value('z');
+    if (b.word('u')) p.v += b.value('u') * scale;
+    if (b.word('w')) p.u += b.value('w');
     return p;
 }
 
-// the arc element from cur to end of a G2/G3 block (I K offsets or R)
-static ProfileSeg arc_seg(const InterpState &s, const Block &b, LathePoint cur, LathePoint end,
-                          int motion, const std::string &who)
+// the element of one G0/G1/G2/G3 move from r.cur to end
+Elem move_elem(const Reader &r, const Block &b, Pt end)
 {
-    ProfileSeg seg;
-    seg.from = cur;
-    seg.to = end;
-    seg.arc = true;
-    seg.rotation = motion == 30 ? 1 : -1;
+    Elem e{false, r.cur, end, {}, false};
+    if (r.motion == 0 || r.motion == 10) return e;
+    if (r.motion != 20 && r.motion != 30)
+        throw InterpError(r.who + ": profile moves must be G0, G1, G2 or G3");
+    e.arc = true;
+    e.ccw = r.motion == 30;
     if (b.word('r')) {
-        seg.center = center_from_radius(cur, end, b.value('r'), seg.rotation, who);
+        e.c = center_from_radius(r.cur, end, b.value('r'), e.ccw, r.who);
     } else if (b.word('i') || b.word('k')) {
         double i = b.word('i') ? b.value('i') : 0, k = b.word('k') ? b.value('k') : 0;
-        seg.center = s.ijk_absolute ? LathePoint{i, k} : LathePoint{cur.x + i, cur.z + k};
+        e.c = r.ijk_absolute ? Pt{k, i} : Pt{r.cur.u + k, r.cur.v + i};
     } else {
-        throw InterpError(who + ": profile arc needs I K or R words");
+        throw InterpError(r.who + ": profile arc needs I K or R words");
     }
-    return seg;
+    e.r = dist(e.c, e.a);
+    return e;
 }
 
-// the modal motion and distance mode of the profile blocks, turned into elements
-Profile read_profile(const InterpState &s, const std::vector<Block> &blocks, const std::string &who)
+// Round the corner between lines `in` and `out` with a fillet (arc) or chamfer of size `size`.
+void round_corner(std::vector<Elem> &elems, Elem &out, double size, bool fillet, const std::string &who)
 {
+    Elem &in = elems.back();
+    if (in.arc || out.arc)
+        throw InterpError(who + ": fillets (A) and chamfers (C) need straight moves on both sides");
+    Pt d1 = elem_tangent(in, 1), d2 = elem_tangent(out, 0);
+    double turn = std::atan2(d1.u * d2.v - d1.v * d2.u, d1.u * d2.u + d1.v * d2.v);
+    double t = size * std::tan(std::fabs(turn) / 2);
+    if (t > elem_length(in) + 1e-9 || t > elem_length(out) + 1e-9)
+        throw InterpError(who + ": fillet or chamfer too large for its moves");
+    Pt corner = in.b;
+    Pt p1{corner.u - d1.u * t, corner.v - d1.v * t}, p2{corner.u + d2.u * t, corner.v + d2.v * t};
+    in.b = p1;
+    out.a = p2;
+    Elem join{fillet, p1, p2, {}, turn > 0, -1, fillet ? size : 0};
+    if (fillet) {
+        double side = turn > 0 ? 1 : -1;
+        join.c = {p1.u - side * d1.v * size, p1.v + side * d1.u * size};
+    }
+    if (elem_length(in) < MIN_MOVE) {
+        elems.pop_back();
+        if (!elems.empty() && !fillet) join.a = elems.back().b;
+    }
+    elems.push_back(join);
+}
+
+// Add one move's element, rounding the previous corner when the previous move asked for it.
+void add_move(std::vector<Elem> &elems, Elem e, double round, bool fillet, const std::string &who)
+{
+    if (elem_length(e) < MIN_MOVE) return;
+    if (!elems.empty()) e.a = elems.back().b;
+    if (round > 0 && !elems.empty()) round_corner(elems, e, round, fillet, who);
+    if (elem_length(e) >= MIN_MOVE) elems.push_back(e);
+}
+
+} // namespace
+
+Profile read_profile(const InterpState &s, const std::vector<Block> &blocks, Pt from,
+                     const std::string &who)
+{
+    Reader r{s, who, s.distance_incremental, s.ijk_absolute, 10, from};
     Profile prof;
-    LathePoint cur;
-    bool have_start = false, incremental = s.distance_incremental;
-    int motion = -1;
+    bool started = false;
+    double round = 0;
+    bool fillet = false;
     for (const Block &b : blocks) {
-        if (b.g_modes[GG_DISTANCE] != -1)
-            incremental = b.g_modes[GG_DISTANCE] == 910;
-        if (b.motion() != -1)
-            motion = b.motion();
-        if (!b.word('x') && !b.word('z'))
-            continue;
-        if (motion != 0 && motion != 10 && motion != 20 && motion != 30)
-            throw InterpError(who + ": profile moves must be G0, G1, G2 or G3");
-        LathePoint end = block_end(s, b, cur, incremental);
-        if (!have_start) {
-            cur = end;
-            have_start = true;
-            continue;
-        }
-        ProfileSeg seg;
-        if (motion == 20 || motion == 30) {
-            seg = arc_seg(s, b, cur, end, motion, who);
-        } else {
-            seg.from = cur;
-            seg.to = end;
-        }
-        prof.segs.push_back(seg);
-        cur = end;
+        if (b.g_modes[GG_DISTANCE] != -1) r.incremental = b.g_modes[GG_DISTANCE] == 910;
+        if (b.g_modes[GG_IJK] != -1) r.ijk_absolute = b.g_modes[GG_IJK] == 901;
+        if (b.motion() != -1) r.motion = b.motion();
+        if (!b.word('x') && !b.word('z') && !b.word('u') && !b.word('w')) continue;
+        Pt end = move_end(r, b);
+        if (started) add_move(prof.elems, move_elem(r, b, end), round, fillet, who);
+        else prof.start = end;
+        started = true;
+        fillet = b.word('a');
+        round = b.word('a') ? b.value('a') : b.word('c') ? b.value('c') : 0;
+        r.cur = end;
     }
-    if (prof.segs.empty())
+    if (prof.elems.empty())
         throw InterpError(who + ": the profile needs a start point and at least one move");
+    prof.start = prof.elems.front().a;
     return prof;
-}
-
-// coordinate of p along the chosen axis
-static double coord(LathePoint p, bool x_axis)
-{
-    return x_axis ? p.x : p.z;
-}
-
-// point of an arc at a fraction of its sweep
-static LathePoint arc_point(const ProfileSeg &g, double frac)
-{
-    double a0 = frame_angle(g.center, g.from), a1 = frame_angle(g.center, g.to);
-    double sweep = g.rotation > 0 ? a1 - a0 : a0 - a1;
-    while (sweep <= 0)
-        sweep += 2 * M_PI;
-    double a = a0 + (g.rotation > 0 ? 1 : -1) * sweep * frac;
-    double r = std::hypot(g.from.x - g.center.x, g.from.z - g.center.z);
-    return {g.center.x + r * std::sin(a), g.center.z + r * std::cos(a)};
-}
-
-// sample the profile densely enough to see every turn of an arc
-static std::vector<LathePoint> samples(const Profile &p)
-{
-    std::vector<LathePoint> pts{p.start()};
-    for (const ProfileSeg &g : p.segs) {
-        int n = g.arc ? 64 : 1;
-        for (int i = 1; i <= n; i++)
-            pts.push_back(g.arc ? arc_point(g, (double)i / n) : g.to);
-    }
-    return pts;
-}
-
-// the chosen coordinate only moves one way along the profile
-bool profile_monotonic(const Profile &p, bool x_axis)
-{
-    std::vector<LathePoint> pts = samples(p);
-    int dir = 0;
-    for (size_t i = 1; i < pts.size(); i++) {
-        double d = coord(pts[i], x_axis) - coord(pts[i - 1], x_axis);
-        if (std::fabs(d) < 1e-9)
-            continue;
-        int sd = d > 0 ? 1 : -1;
-        if (dir != 0 && sd != dir)
-            return false;
-        dir = sd;
-    }
-    return true;
-}
-
-// extent of the profile along the chosen axis
-void profile_range(const Profile &p, bool x_axis, double &lo, double &hi)
-{
-    std::vector<LathePoint> pts = samples(p);
-    lo = hi = coord(pts[0], x_axis);
-    for (const LathePoint &q : pts) {
-        lo = std::min(lo, coord(q, x_axis));
-        hi = std::max(hi, coord(q, x_axis));
-    }
-}
-
-// crossing of a line element with the level
-static bool line_cross(const ProfileSeg &g, bool x_axis, double level, double &other)
-{
-    double a = coord(g.from, x_axis), b = coord(g.to, x_axis);
-    if ((level - a) * (level - b) > 0 || a == b)
-        return false;
-    double t = (level - a) / (b - a);
-    other = coord(g.from, !x_axis) + t * (coord(g.to, !x_axis) - coord(g.from, !x_axis));
-    return true;
-}
-
-// crossing of an arc element with the level: the root inside the arc's sweep
-static bool arc_cross(const ProfileSeg &g, bool x_axis, double level, double &other)
-{
-    double r = std::hypot(g.from.x - g.center.x, g.from.z - g.center.z);
-    double d = level - coord(g.center, x_axis);
-    if (std::fabs(d) > r)
-        return false;
-    double h = std::sqrt(r * r - d * d);
-    for (double sign : {-1.0, 1.0}) {
-        double o = coord(g.center, !x_axis) + sign * h;
-        LathePoint q = x_axis ? LathePoint{level, o} : LathePoint{o, level};
-        double a0 = frame_angle(g.center, g.from), aq = frame_angle(g.center, q);
-        double a1 = frame_angle(g.center, g.to);
-        double full = g.rotation > 0 ? a1 - a0 : a0 - a1, part = g.rotation > 0 ? aq - a0 : a0 - aq;
-        while (full <= 0) full += 2 * M_PI;
-        while (part < 0) part += 2 * M_PI;
-        if (part <= full + 1e-9) {
-            other = o;
-            return true;
-        }
-    }
-    return false;
-}
-
-// first element of the profile that reaches the level
-bool profile_cross(const Profile &p, bool x_axis, double level, double &other)
-{
-    for (const ProfileSeg &g : p.segs)
-        if (g.arc ? arc_cross(g, x_axis, level, other) : line_cross(g, x_axis, level, other))
-            return true;
-    return false;
 }
 
 }  // namespace cycles

@@ -76,6 +76,9 @@ class Question:
 
 def main():
     """Serve tool changes until SIGTERM."""
+    if sys.argv[1:2] in (["--help"], ["-h"]):
+        sys.stdout.write("Usage: loadusr hal_manualtoolchange\n" + __doc__.split("\n", 2)[2])
+        return 0
     comp = hal.component("hal_manualtoolchange")
     comp.newpin("number", hal.HAL_S32, hal.HAL_IN)
     comp.newpin("change", hal.HAL_BIT, hal.HAL_IN)

@@ -26,9 +26,18 @@ static void install_signals(void)
     sigaction(SIGINT, &sa, NULL);
 }
 
-/* Path from the single "config=FILE" argument, or NULL after printing usage. */
-static const char *config_arg(int argc, char **argv)
+/* Path from the single "config=FILE" argument, or NULL after printing usage (help: *help set). */
+static const char *config_arg(int argc, char **argv, int *help)
 {
+    *help = argc == 2 && (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0);
+    if (*help) {
+        printf("Usage: mb2hal config=FILE.ini\n"
+               "Modbus master as a HAL user component: reads and writes the coils and registers\n"
+               "of Modbus TCP and RTU devices as FILE.ini's [TRANSACTION_NN] sections describe\n"
+               "and shows them as pins named after [MB2HAL_INIT]HAL_MODULE_NAME (default mb2hal).\n"
+               "Runs until SIGTERM or SIGINT (halcmd unloadusr).\n");
+        return NULL;
+    }
     if (argc == 2 && strncmp(argv[1], "config=", 7) == 0 && argv[1][7])
         return argv[1] + 7;
     fprintf(stderr, "mb2hal: usage: mb2hal config=FILE.ini\n");
@@ -84,9 +93,10 @@ int main(int argc, char **argv)
     static mb2hal_cfg_t cfg;
     static mb_tx_t txs[MB2HAL_MAX_TX];
     static mb_link_t links[MB2HAL_MAX_TX];
-    const char *path = config_arg(argc, argv);
+    int help;
+    const char *path = config_arg(argc, argv, &help);
     if (!path || mb2hal_config_load(&cfg, path))
-        return 1;
+        return help ? 0 : 1;
     install_signals();
     int comp_id = hal_init(cfg.module_name);
     if (comp_id < 0) {

@@ -29,15 +29,21 @@ typedef struct {
     int pty_keep_fd;    /* our own open of the pty slave, so the master never sees EIO */
 } sim_t;
 
-/* Prints the usage text and returns 1. */
-static int usage(void)
+/* Prints the usage text to out and returns status. */
+static int usage_to(FILE *out, int status)
 {
-    fprintf(stderr, "usage: modbus-sim [--bind ADDR] [--port N] [--coils N] [--discrete N] "
+    fprintf(out, "usage: modbus-sim [--bind ADDR] [--port N] [--coils N] [--discrete N] "
                     "[--holding N] [--input N] [--set TABLE:ADDR=VALUE]... [--log FILE] [--rtu SLAVE]\n"
                     "TABLE is coil, di, hr or ir; port 0 picks a free port, printed as 'port N'.\n"
                     "--rtu serves Modbus RTU as SLAVE on a new pty, printed as 'pty PATH'.\n"
                     "stdin takes commands 'set TABLE ADDR VALUE' and 'quit'.\n");
-    return 1;
+    return status;
+}
+
+/* Prints the usage text on stderr and returns 1. */
+static int usage(void)
+{
+    return usage_to(stderr, 1);
 }
 
 /* Parses a non-negative integer up to max; -1 when bad. */
@@ -269,6 +275,8 @@ static modbus_t *start_rtu(sim_t *sim)
 int main(int argc, char **argv)
 {
     sim_t sim = {"127.0.0.1", 0, 1000, 1000, 1000, 1000, NULL, NULL, {0}, 0, 1, -1, -1, -1};
+    if (argc == 2 && (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-h")))
+        return usage_to(stdout, 0);
     if (parse_sizes(&sim, argc, argv))
         return usage();
     sim.map = modbus_mapping_new(sim.ncoils, sim.ndi, sim.nhr, sim.nir);

@@ -1,0 +1,287 @@
+/* tp_junction.c: how consecutive moves meet: stop, tangent or blend; blend sizes, tiling of dense moves, emission. */
+#include <math.h>
+#include <string.h>
+#include "tp_internal.h"
+
+/* Reversals sharper than this stop (LinuxCNC: within 2 degrees of going back). */
+#define TP_REVERSAL_RAD (M_PI - 2.0 * M_PI / 180.0)
+/* Tangent directions closer than this need no blend. */
+#define TP_TANGENT_RAD 1e-6
+/* Curvature jump (1/units) below which a tangent join counts as smooth. */
+#define TP_KINK_SMOOTH 1e-9
+/* Share of the tolerance the blend sizing aims at; the rest covers estimate errors. */
+#define TP_TOL_SHARE 0.95
+#define TP_BLEND_TRIES 4
+/* Turns above this (rad) are corners: blends on both sides of a move meet without curvature. */
+#define TP_TILE_MAX_TURN 0.35
+
+/* How move a meets move b. */
+static tp_jct_t classify(tp_planner_t *tp, tp_seg_t *a, tp_seg_t *b, tp_corner_t *c)
+{
+    if (a->in.kind == TP_SEG_RIGID_TAP || b->in.kind == TP_SEG_RIGID_TAP)
+        return TP_JCT_STOP;
+    if (a->in.indexer_jnum >= 0 || b->in.indexer_jnum >= 0 || b->in.atspeed)
+        return TP_JCT_STOP;
+    if (a->in.motion_type == TP_MOTION_PROBING || b->in.motion_type == TP_MOTION_PROBING)
+        return TP_JCT_STOP;
+    if (a->sync != b->sync || a->geo.metric != b->geo.metric)
+        return TP_JCT_STOP;
+    tp_corner_describe(c, &a->geo, &b->geo);
+    if (a->term == TP_TERM_COND_STOP || c->theta > TP_REVERSAL_RAD)
+        return TP_JCT_STOP;
+    int smooth = c->kink <= TP_KINK_SMOOTH || tp->type != TP_PLANNER_SCURVE;
+    if (c->theta < TP_TANGENT_RAD && (smooth || a->term != TP_TERM_COND_BLEND))
+        return TP_JCT_TANGENT;
+    if (a->term != TP_TERM_COND_BLEND || a->sync == TP_SYNC_POS)
+        return c->theta < TP_TANGENT_RAD ? TP_JCT_TANGENT : TP_JCT_STOP;
+    return TP_JCT_BLEND;
+}
+
+/* Tolerance left to a blend between units a and b after their lines' own deviation. */
+static double blend_tol(const tp_seg_t *a, const tp_seg_t *b)
+{
+    if (!(a->tol > 0.0))
+        return 0.0;
+    return a->tol - fmax(a->unit_dev, b->unit_dev);
+}
+
+/* Symmetric cut a blend between a and b wants: enough for the requested speed, within the tolerance. */
+static double blend_want(tp_planner_t *tp, tp_seg_t *a, tp_seg_t *b, const tp_corner_t *c)
+{
+    double v_need = fmin(a->in.vel, b->in.vel) * fmax(1.0, tp->lim.max_feed_override);
+    if (a->in.motion_type == TP_MOTION_TRAVERSE || b->in.motion_type == TP_MOTION_TRAVERSE)
+        v_need = fmax(v_need, fmin(a->in.ini_maxvel, b->in.ini_maxvel));
+    double acc = fmin(a->lim.acc[TP_PATH_AX], b->lim.acc[TP_PATH_AX]);
+    double jerk = tp->type == TP_PLANNER_SCURVE ? fmin(a->lim.jerk[TP_PATH_AX], b->lim.jerk[TP_PATH_AX]) : 0.0;
+    for (int i = 0; i < TP_NAX; i++) {
+        if (a->lim.acc[i] > 0.0)
+            acc = fmin(acc, a->lim.acc[i]);
+        if (jerk > 0.0 && a->lim.jerk[i] > 0.0)
+            jerk = fmin(jerk, a->lim.jerk[i]);
+    }
+    double d = 1.5 * tp_blend_need_cut(c, v_need, 0.7 * acc, jerk > 0.0 ? 0.4 * jerk : 0.0);
+    double tol = blend_tol(a, b);
+    if (tol > 0.0)
+        d = fmin(d, tp_blend_tol_cut(c, TP_TOL_SHARE * tol));
+    return d;
+}
+
+/* Decide the junction between b (the last move) and c (just added) and what blend it wants. */
+void tp_jct_plan(tp_planner_t *tp, tp_seg_t *b, tp_seg_t *c)
+{
+    tp_corner_t cr;
+    b->jct_out = classify(tp, b, c, &cr);
+    c->jct_in = b->jct_out;
+    b->want_out = c->want_in = b->jct_out == TP_JCT_BLEND ? blend_want(tp, b, c, &cr) : 0.0;
+}
+
+/* Cut lengths of b from the blends at both its ends; tiled when they consume it all. */
+static void split(tp_seg_t *b)
+{
+    double din = b->jct_in == TP_JCT_BLEND ? b->want_in : 0.0;
+    double dout = b->jct_out == TP_JCT_BLEND ? b->want_out : 0.0;
+    double L = b->geo.len;
+    if (din + dout >= L) {
+        b->cut_in = L * din / (din + dout);
+        b->cut_out = L - b->cut_in;
+        b->tiled = din > 0.0 && dout > 0.0;
+    } else {
+        b->cut_in = din;
+        b->cut_out = dout;
+        b->tiled = 0;
+    }
+}
+
+/* Discrete curvature at the vertex between a and b: turn of the direction over the mean length. */
+static tp_vec_t vertex_curvature(const tp_seg_t *a, const tp_seg_t *b)
+{
+    tp_jet_t ja = tp_geo_jet(&a->geo, a->geo.len), jb = tp_geo_jet(&b->geo, 0.0);
+    tp_vec_t k = tp_vec_sub(&jb.d1, &ja.d1);
+    return tp_vec_scale(&k, 2.0 / (a->geo.len + b->geo.len));
+}
+
+/* Curvature where the blends on a tiled line b meet: the gentler of the curvatures at its two
+ * vertices when both turn the same way (minmod), none at an inflection; normal to b. */
+static void tile_curvature(tp_seg_t *a, tp_seg_t *b, tp_seg_t *c)
+{
+    b->k_in_set = b->k_out_set = 0;
+    if (!b->tiled || b->geo.kind != TP_GEO_LINE || !a || !c)
+        return;
+    const tp_vec_t *u = &b->geo.u.line.dir;
+    double uu = tp_vec_dot(u, u);
+    tp_corner_t c1, c2;
+    tp_corner_describe(&c1, &a->geo, &b->geo);
+    tp_corner_describe(&c2, &b->geo, &c->geo);
+    if (c1.theta > TP_TILE_MAX_TURN || c2.theta > TP_TILE_MAX_TURN)
+        return;                         /* corners, not a sampled curve: meet without curvature */
+    tp_vec_t k1 = vertex_curvature(a, b), k2 = vertex_curvature(b, c);
+    k1 = tp_vec_axpy(&k1, -tp_vec_dot(&k1, u) / uu, u);
+    k2 = tp_vec_axpy(&k2, -tp_vec_dot(&k2, u) / uu, u);
+    double n1 = sqrt(tp_vec_dot(&k1, &k1)), n2 = sqrt(tp_vec_dot(&k2, &k2));
+    double cs = n1 > 0.0 && n2 > 0.0 ? tp_vec_dot(&k1, &k2) / (n1 * n2) : 0.0;
+    if (cs <= 0.5)
+        return;
+    tp_vec_t sum = tp_vec_axpy(&k1, 1.0, &k2);
+    double ns = sqrt(tp_vec_dot(&sum, &sum));
+    b->k_in = tp_vec_scale(&sum, cs * fmin(n1, n2) / ns);
+    b->k_out = b->k_in;
+    b->k_in_set = b->k_out_set = 1;
+}
+
+/* Blend a -> b at their cuts; shrinks b's side (and a's when free) until it keeps the tolerance. */
+static int build_blend(tp_planner_t *tp, tp_seg_t *a, tp_seg_t *b, int a_free, double *a_shrunk)
+{
+    tp_corner_t c;
+    tp_blend_spec_t spec;
+    double tol = blend_tol(a, b);
+    tp_corner_describe(&c, &a->geo, &b->geo);
+    memset(&spec, 0, sizeof(spec));
+    spec.da = a->cut_out;
+    spec.db = b->cut_in;
+    spec.ka_set = a->k_out_set;
+    spec.ka = a->k_out;
+    spec.kb_set = b->k_in_set;
+    spec.kb = b->k_in;
+    (void)tp;
+    for (int k = 0; k < TP_BLEND_TRIES; k++) {
+        if (tp_blend_build(&a->blend, &c, &spec) < 0)
+            return -1;
+        double worst = tol > 0.0 ? tp_blend_worst(&a->blend, &c, &spec, tol) : 0.0;
+        if (worst <= tol)
+            break;
+        if (k == TP_BLEND_TRIES - 1)
+            return -1;
+        if (spec.kb_set) {
+            spec.kb_set = 0;            /* first give up the tiling curvature */
+            continue;
+        }
+        double f = fmin(0.9, TP_TOL_SHARE * tol / worst);
+        spec.db *= f;
+        if (a_free && !spec.ka_set)
+            spec.da *= f;
+    }
+    *a_shrunk = a->cut_out - spec.da;
+    a->cut_out = spec.da;
+    if (spec.db < b->cut_in || !spec.kb_set) {
+        b->tiled = 0;
+        b->k_in_set = b->k_out_set = 0;
+    }
+    b->cut_in = spec.db;
+    return 0;
+}
+
+/* The executor could still stop before global position s_at. */
+int tp_jct_can_stop_before(const tp_planner_t *tp, double s_at)
+{
+    const tp_region_t *r = tp->ex.reg < tp->reg_head ? tp_reg_at((tp_planner_t *)tp, tp->ex.reg) : NULL;
+    tp_lim1_t lim = {r ? r->a : tp->lim.amax, r ? r->j : 0.0};
+    if (!(lim.acc > 0.0))
+        lim.acc = 1.0;
+    double reach = tp_stop_dist(tp->ex.v, tp->ex.a, &lim);
+    return tp->ex.s + reach + tp->ex.v * tp->lim.cycle_time <= s_at;
+}
+
+/* Emit the blend a -> b, or the rest of a and a stop at the corner when no blend fits. */
+static void emit_in_blend(tp_planner_t *tp, tp_seg_t *a, tp_seg_t *b)
+{
+    double shrunk = 0.0;
+    int a_free = !a->k_out_set;
+    if (build_blend(tp, a, b, a_free, &shrunk) < 0) {
+        /* the rest of a; a curvature carried into its cut point must come to rest there */
+        tp->stop_next = tp->stop_next || a->k_out_set;
+        tp_unit_emit(tp, a, a->geo.len - a->cut_out, a->geo.len, 0);
+        a->jct_out = b->jct_in = TP_JCT_STOP;
+        a->cut_out = b->cut_in = 0.0;
+        b->tiled = 0;
+        b->k_in_set = b->k_out_set = 0;
+        tp->stop_next = 1;
+        return;
+    }
+    if (shrunk > 0.0)
+        tp_unit_emit(tp, a, a->geo.len - a->cut_out - shrunk, a->geo.len - a->cut_out, 0);
+    tp_emit_blend(tp, a, tp_unit_last(tp, a), b, b);
+}
+
+/* Settle b for good now that its successor c is known: its cuts, its tiling curvature, the blend
+ * into it, its body.  Everything up to the start of the blend b -> c is then committed. */
+void tp_jct_commit(tp_planner_t *tp, tp_seg_t *a, tp_seg_t *b, tp_seg_t *c)
+{
+    if (b->jct_in != TP_JCT_BLEND)
+        a = NULL;
+    split(b);
+    tile_curvature(a, b, c);
+    if (a)
+        emit_in_blend(tp, a, b);
+    if (b->cut_in + b->cut_out < b->geo.len * (1.0 - 1e-12)) {
+        b->tiled = 0;
+        b->k_in_set = b->k_out_set = 0;
+    }
+    if (b->in.kind == TP_SEG_RIGID_TAP)
+        tp_emit_piece(tp, b, b, 0, 0.0, 0.0, TP_REG_TAP);
+    else
+        tp_unit_emit(tp, b, b->cut_in, b->geo.len - b->cut_out, 0);
+    for (uint64_t k = b->serial; k <= b->unit_last; k++)
+        tp_seg_at(tp, k)->finalized = 1;
+    if (b->jct_out == TP_JCT_STOP)
+        tp->stop_next = 1;
+}
+
+/* The executor is far from the end of the emitted path: the provisional tail can wait. */
+static int path_end_far(const tp_planner_t *tp)
+{
+    const tp_region_t *r = tp->ex.reg < tp->reg_head ? tp_reg_at((tp_planner_t *)tp, tp->ex.reg) : NULL;
+    tp_lim1_t lim = {r ? r->a : tp->lim.amax, r ? r->j : 0.0};
+    if (!r || !(lim.acc > 0.0))
+        return 0;
+    /* the speed the executor may reach: now, or the cap of where it is */
+    double v = fmax(tp->ex.v, fmin(r->v_mach, fmin(r->v_feed, r->v_rapid) * fmax(1.0, tp->lim.max_feed_override)));
+    double reach = tp_stop_dist(v, fabs(tp->ex.a), &lim);
+    return tp->ex.s + 3.0 * reach + 20.0 * v * tp->lim.cycle_time + 1e-6 < tp->s_emit;
+}
+
+/* Emit the provisional tail: the blend b -> c (no curvature at c's side) and c's body to its end. */
+static void provisional_emit(tp_planner_t *tp, tp_seg_t *b, tp_seg_t *c)
+{
+    c->cut_in = 0.0;
+    c->k_in_set = 0;
+    if (b && b->jct_out == TP_JCT_BLEND) {
+        double shrunk = 0.0;
+        c->cut_in = fmin(c->want_in, c->geo.len);
+        if (build_blend(tp, b, c, 0, &shrunk) == 0) {
+            tp_emit_blend(tp, b, tp_unit_last(tp, b), c, c);
+        } else {
+            tp->stop_next = tp->stop_next || b->k_out_set;
+            tp_unit_emit(tp, b, b->geo.len - b->cut_out, b->geo.len, 0);
+            c->cut_in = 0.0;
+            tp->stop_next = 1;
+        }
+    }
+    /* one element for the whole open unit: it is emitted again (per move) when the unit closes */
+    tp->prov.body_elem = tp->elem_head;
+    if (c->in.kind != TP_SEG_RIGID_TAP)
+        tp_emit_piece(tp, c, c, 0, c->cut_in, c->geo.len, 0);
+}
+
+/* What the executor may use before c's successor is known: the blend b -> c and c's body.  The
+ * next add rolls it back; while the executor is far from the path end it is not even emitted
+ * (tp_jct_provisional_due emits it when the executor comes near). */
+void tp_jct_provisional(tp_planner_t *tp, tp_seg_t *b, tp_seg_t *c)
+{
+    tp_emit_mark(tp);
+    tp->prov.lazy_b = b ? b->serial : UINT64_MAX;
+    tp->prov.lazy_c = c->serial;
+    tp->prov.lazy = path_end_far(tp);
+    if (!tp->prov.lazy)
+        provisional_emit(tp, b, c);
+}
+
+/* Emit a postponed provisional tail once the executor comes near the end of the path (or when
+ * the tail must stay for good). */
+void tp_jct_provisional_due(tp_planner_t *tp, int now)
+{
+    if (!tp->prov.valid || !tp->prov.lazy || (!now && path_end_far(tp)))
+        return;
+    tp->prov.lazy = 0;
+    tp_seg_t *b = tp->prov.lazy_b == UINT64_MAX ? NULL : tp_seg_at(tp, tp->prov.lazy_b);
+    provisional_emit(tp, b, tp_seg_at(tp, tp->prov.lazy_c));
+}

@@ -1,0 +1,2 @@
+import namedparams
+import oword
