@@ -33,7 +33,7 @@ for req in ("hello EMC tester 1.0", "get echo", "set echo off", "get echo", "get
     s.show(req)
 print("== state and mode")
 for req in ("get estop", "set estop off", "get estop", "get machine", "set machine on", "get machine",
-            "set wait_mode done", "get set_wait", "get mode", "set mode mdi", "get mode", "set mode bogus",
+            "set set_wait done", "get set_wait", "set wait_mode done", "get mode", "set mode mdi", "get mode", "set mode bogus",
             "set mode manual", "get mode", "get teleop_enable"):
     s.show(req)
 print("== coolant, spindle, brake, overrides")

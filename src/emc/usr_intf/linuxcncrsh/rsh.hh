@@ -47,7 +47,7 @@ struct RshSession {
     int failed_hellos = 0;
     std::string client_name;
     std::string prot_version = RSH_SERVER_VERSION;
-    bool echo = true;
+    bool echo = true;          // reported by 'get echo'; requests are never sent back (as 2.10)
     bool verbose = false;
     UiWait wait_mode = UiWait::received;
     double timeout_s = 0;      // 0: wait without a limit

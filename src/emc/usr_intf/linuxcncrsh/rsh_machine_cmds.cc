@@ -222,6 +222,7 @@ R set_feed_override(RshServer &sv, RshSession &s, const RshArgs &a)
     return send<EMC_TRAJ_SET_SCALE>(sv, s, [&](EMC_TRAJ_SET_SCALE &m) { m.scale = pct / 100.0; });
 }
 
+// get spindle_override [n|-1]: "SPINDLE_OVERRIDE n percent" per spindle.
 R get_spindle_override(RshServer &sv, RshSession &s, const RshArgs &a)
 {
     const EMC_STAT *st = rsh_status(sv, s);
@@ -229,7 +230,8 @@ R get_spindle_override(RshServer &sv, RshSession &s, const RshArgs &a)
     if (!st) return R::nak;
     R r = spindles(s, *st, a, 0, 0, &lo, &hi);
     if (r != R::ok) return r;
-    for (int n = lo; n <= hi; n++) percent_reply(s, "SPINDLE_OVERRIDE", st->motion.spindle[n].spindle_scale);
+    for (int n = lo; n <= hi; n++)
+        s.reply("SPINDLE_OVERRIDE " + std::to_string(n) + " " + rsh_real(st->motion.spindle[n].spindle_scale * 100.0));
     return R::ok;
 }
 

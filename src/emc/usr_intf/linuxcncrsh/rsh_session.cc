@@ -93,7 +93,6 @@ void rsh_handle_line(RshServer &sv, RshSession &s, const std::string &line)
 {
     std::vector<std::string> w = rsh_words(line);
     if (w.empty()) return;
-    if (s.linked && s.echo) s.reply(line);
     std::string cmd = rsh_lower(w[0]);
     RshArgs a;
     a.args.assign(w.begin() + 1, w.end());

@@ -2,6 +2,7 @@
 #include <sys/time.h>
 
 #include <cstdio>
+#include <cstdlib>
 
 #include "inifile.hh"
 #include "rsh.hh"
@@ -136,6 +137,13 @@ R set_wait_mode(RshServer &, RshSession &s, const RshArgs &a)
     return a.count() == 1 && parse_wait(a.at(0), &s.wait_mode) ? R::ok : R::nak;
 }
 
+// The old name of wait_mode still works, with a warning line (as LinuxCNC 2.10 gives).
+R set_set_wait(RshServer &sv, RshSession &s, const RshArgs &a)
+{
+    s.reply("WARNING: \"set_wait\" is deprecated and will go away; use \"wait_mode\"");
+    return set_wait_mode(sv, s, a);
+}
+
 // set wait received|done: wait for this session's last command.
 R set_wait(RshServer &sv, RshSession &s, const RshArgs &a)
 {
@@ -222,7 +230,7 @@ const RshSubcommand rsh_session_subcommands[] = {
     {"ini", get_ini, nullptr, false},
     {"debug", get_debug, set_debug, true},
     {"wait_mode", get_wait_mode, set_wait_mode, false},
-    {"set_wait", get_wait_mode, set_wait_mode, false},
+    {"set_wait", get_wait_mode, set_set_wait, false},
     {"wait", nullptr, set_wait, false},
     {"timeout", get_timeout, set_timeout, false},
     {"set_timeout", get_timeout, set_timeout, false},
