@@ -1,6 +1,6 @@
 # lib.sh: a machine (linuxcncsvr + nml_responder, the stand-in for task) and linuxcncrsh
 # on a port of this test's instance (21000 + OPENEMC_INSTANCE), for the linuxcncrsh tests.
-RSH_INI="$EMC2_HOME/tests/pylinuxcnc/config/machine.ini"
+RSH_INI="$EMC2_HOME/tests/linuxcncrsh/common/rsh.ini"
 RSH_PORT=$((21000 + ${OPENEMC_INSTANCE:-0}))
 export RSH_PORT
 

@@ -39,7 +39,8 @@ for req in ("get estop", "set estop off", "get estop", "get machine", "set machi
 print("== coolant, spindle, brake, overrides")
 for req in ("get mist", "set mist on", "get mist", "set flood on", "get flood", "set flood maybe",
             "get spindle", "set spindle forward", "get spindle", "set spindle increase", "get spindle",
-            "set spindle off", "get spindle 5", "get brake", "set brake off", "get brake",
+            "set spindle off", "set spindle reverse 1", "get spindle -1", "set spindle off -1",
+            "get spindle 1", "get spindle 5", "get brake", "set brake off", "get brake",
             "set brake on 7", "get feed_override", "set feed_override 75", "get feed_override",
             "get spindle_override", "set spindle_override 120", "get spindle_override"):
     s.show(req)

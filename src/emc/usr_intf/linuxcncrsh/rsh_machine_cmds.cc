@@ -33,14 +33,13 @@ R send(RshServer &sv, RshSession &s, Fill fill)
     return rsh_send(sv, s, m);
 }
 
-// The spindles named by argument i (default dflt: -1 all or a number). LinuxCNC's error
-// text names the spindle count as the upper end of the range.
+// The spindles named by argument i (default dflt: -1 all or a number).
 R spindles(RshSession &s, const EMC_STAT &st, const RshArgs &a, size_t i, int dflt, int *lo, int *hi)
 {
     int n = st.motion.traj.spindles > 0 ? st.motion.traj.spindles : 1;
     long v = dflt;
     if (a.count() > i && (!rsh_parse_int(a.at(i), &v) || v < -1 || v >= n)) {
-        s.reply("error: invalid spindle: " + a.at(i) + " (valid: -1 - " + std::to_string(n) + ")");
+        s.reply("error: invalid spindle: " + a.at(i) + " (valid: -1 - " + std::to_string(n - 1) + ")");
         return R::replied;
     }
     *lo = v < 0 ? 0 : static_cast<int>(v);
@@ -124,13 +123,14 @@ R set_flood(RshServer &sv, RshSession &s, const RshArgs &a)
     return send<EMC_COOLANT_FLOOD_OFF>(sv, s, [](EMC_COOLANT_FLOOD_OFF &) {});
 }
 
-// get spindle [n|-1]: "SPINDLE n FORWARD|REVERSE|INCREASE|DECREASE|OFF" per spindle.
+// get spindle [n|-1]: "SPINDLE n FORWARD|REVERSE|INCREASE|DECREASE|OFF" for spindle n
+// (default 0), or a line per spindle for -1.
 R get_spindle(RshServer &sv, RshSession &s, const RshArgs &a)
 {
     const EMC_STAT *st = rsh_status(sv, s);
     int lo, hi;
     if (!st) return R::nak;
-    R r = spindles(s, *st, a, 0, -1, &lo, &hi);
+    R r = spindles(s, *st, a, 0, 0, &lo, &hi);
     if (r != R::ok) return r;
     for (int n = lo; n <= hi; n++) {
         const EMC_SPINDLE_STAT &sp = st->motion.spindle[n];
