@@ -60,6 +60,8 @@ show("halui.joint.0.is-homed", "halui.joint.1.is-homed", "halui.joint.2.is-homed
 press("halui.home-all")
 wait_for(lambda: all(stat.homed[:3]) and get("halui.joint.2.is-homed"), "all homed")
 show("halui.joint.0.is-homed", "halui.joint.1.is-homed", "halui.joint.2.is-homed")
+press("halui.mode.joint")
+wait_for(lambda: stat.motion_mode == linuxcnc.TRAJ_MODE_FREE and get("halui.mode.is-joint"), "joint mode")
 press("halui.joint.2.select")
 press("halui.joint.selected.unhome")
 wait_for(lambda: not stat.homed[2] and not get("halui.joint.2.is-homed"), "joint 2 unhomed")
