@@ -11,6 +11,7 @@ const double RECEIVE_TIMEOUT_S = 1.0;
 // Spindle speed of start/forward/reverse without an S word or [DISPLAY]DEFAULT_SPINDLE_SPEED.
 const double FALLBACK_SPINDLE_RPM = 500.0;
 
+// Ask task for an E-stop / machine state.
 void set_state(Halui &h, int state)
 {
     EMC_TASK_SET_STATE m;
@@ -18,6 +19,7 @@ void set_state(Halui &h, int state)
     halui_send(h, m);
 }
 
+// Ask task for a mode.
 void set_mode(Halui &h, int mode)
 {
     EMC_TASK_SET_MODE m;
@@ -25,6 +27,7 @@ void set_mode(Halui &h, int mode)
     halui_send(h, m);
 }
 
+// Jog axes (teleop, 1) or joints (free mode, 0).
 void teleop(Halui &h, int enable)
 {
     EMC_TRAJ_SET_TELEOP_ENABLE m;
@@ -32,6 +35,7 @@ void teleop(Halui &h, int enable)
     halui_send(h, m);
 }
 
+// A command without fields.
 template <class M>
 void plain(Halui &h)
 {
@@ -39,6 +43,7 @@ void plain(Halui &h)
     halui_send(h, m);
 }
 
+// M1 stops on or off.
 void optional_stop(Halui &h, int on)
 {
     EMC_TASK_PLAN_SET_OPTIONAL_STOP m;
@@ -46,6 +51,7 @@ void optional_stop(Halui &h, int on)
     halui_send(h, m);
 }
 
+// Block delete on or off.
 void block_delete(Halui &h, int on)
 {
     EMC_TASK_PLAN_SET_BLOCK_DELETE m;
@@ -53,6 +59,7 @@ void block_delete(Halui &h, int on)
     halui_send(h, m);
 }
 
+// Run the open program from its start.
 void program_run(Halui &h)
 {
     EMC_TASK_PLAN_RUN m;
@@ -60,6 +67,7 @@ void program_run(Halui &h)
     halui_send(h, m);
 }
 
+// Home every joint (the homing sequence).
 void home_all(Halui &h)
 {
     EMC_JOINT_HOME m;
@@ -110,6 +118,7 @@ double spindle_rpm(const Halui &h)
     return h.cfg.default_spindle_speed > 0 ? h.cfg.default_spindle_speed : FALLBACK_SPINDLE_RPM;
 }
 
+// Start spindle n forward (1) or in reverse (-1).
 void spindle_on(Halui &h, int n, int direction)
 {
     EMC_SPINDLE_ON m;
@@ -118,6 +127,7 @@ void spindle_on(Halui &h, int n, int direction)
     halui_send(h, m);
 }
 
+// A spindle command carrying only the spindle number.
 template <class M>
 void spindle_cmd(Halui &h, int n)
 {

@@ -18,11 +18,13 @@ bool jog_allowed(Halui &h, bool axis)
     return s.motion.traj.mode == (axis ? EMC_TRAJ_MODE_TELEOP : EMC_TRAJ_MODE_FREE);
 }
 
+// jjogmode of an axis or joint jog.
 int jog_mode(bool axis)
 {
     return axis ? EMC_JOG_AXIS : EMC_JOG_JOINT;
 }
 
+// Jog continuously at speed_per_min (its sign is the direction).
 void jog_cont(Halui &h, int n, bool axis, double speed_per_min)
 {
     if (!jog_allowed(h, axis) || speed_per_min == 0) return;
@@ -33,6 +35,7 @@ void jog_cont(Halui &h, int n, bool axis, double speed_per_min)
     halui_send(h, m);
 }
 
+// Stop a jog.
 void jog_stop(Halui &h, int n, bool axis)
 {
     if (!jog_allowed(h, axis)) return;
@@ -79,6 +82,7 @@ void jog_controls(Halui &h, JogPins &p, int n, bool axis, double speed, double d
     if (a && p.analog) analog_jog(h, n, axis, speed, deadband, **p.analog, *a);
 }
 
+// A joint command (home, unhome) for one joint.
 template <class M>
 void joint_cmd(Halui &h, int joint)
 {

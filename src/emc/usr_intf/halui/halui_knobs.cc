@@ -26,6 +26,7 @@ void knob(const OverridePins &p, OverrideKnob &k, double current, const Override
     if (override_update(k, read_knob(p), current, lim, now_s, &target)) make(target);
 }
 
+// A knob's range; reset sets 1.0 where the knob has a reset pin.
 OverrideLimits limits(double lo, double hi, bool has_reset)
 {
     OverrideLimits l;

@@ -17,8 +17,10 @@ const double CYCLE_S = 0.01;
 
 volatile std::sig_atomic_t stop_requested = 0;
 
+// SIGTERM/SIGINT/SIGHUP: leave the loop after this scan.
 void on_signal(int) { stop_requested = 1; }
 
+// The usage text.
 void usage(FILE *out)
 {
     fprintf(out, "Usage: halui [-ini INIFILE]\n"
@@ -60,6 +62,7 @@ void pause_s(double seconds)
     nanosleep(&ts, nullptr);
 }
 
+// Signals end the loop; a sleep they interrupt ends early.
 void install_signals()
 {
     struct sigaction sa;
@@ -88,6 +91,7 @@ void cycle(Halui &h)
 
 } // namespace
 
+// Read the INI file, join HAL, make the pins, scan until a signal.
 int main(int argc, char **argv)
 {
     bool help = false;

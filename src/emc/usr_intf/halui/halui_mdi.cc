@@ -5,6 +5,7 @@
 
 namespace {
 
+// Ask task for a mode.
 void set_mode(Halui &h, int mode)
 {
     EMC_TASK_SET_MODE m;

@@ -58,8 +58,7 @@ private:
 };
 
 // printf into a std::string.
-std::string fmt(const char *f, ...) __attribute__((format(printf, 1, 2)));
-std::string fmt(const char *f, ...)
+__attribute__((format(printf, 1, 2))) std::string fmt(const char *f, ...)
 {
     char buf[HAL_NAME_LEN + 1];
     va_list ap;

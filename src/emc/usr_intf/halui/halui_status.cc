@@ -4,9 +4,11 @@
 
 namespace {
 
+// Write an output pin.
 void set(hal_bit_t **pin, bool v) { **pin = v; }
 void set(hal_float_t **pin, double v) { **pin = v; }
 
+// Machine, E-stop, modes, coolant, program and override outputs.
 void machine_outputs(HaluiPins &p, const EMC_STAT &s)
 {
     const EMC_TASK_STAT &t = s.task;
@@ -30,6 +32,7 @@ void machine_outputs(HaluiPins &p, const EMC_STAT &s)
     set(p.max_velocity.value, s.motion.traj.maxVelocity);
 }
 
+// The status pins of one spindle.
 void spindle_outputs(SpindlePins &p, const EMC_SPINDLE_STAT &sp)
 {
     set(p.is_on, sp.enabled != 0);
@@ -39,6 +42,7 @@ void spindle_outputs(SpindlePins &p, const EMC_SPINDLE_STAT &sp)
     set(p.override.value, sp.spindle_scale);
 }
 
+// The status pins of one joint (or of the selected one).
 void joint_status(JointStatusPins &p, const EMC_JOINT_STAT &j)
 {
     set(p.is_homed, j.homed != 0);
@@ -50,12 +54,14 @@ void joint_status(JointStatusPins &p, const EMC_JOINT_STAT &j)
     set(p.override_limits, j.overrideLimits != 0);
 }
 
+// Every joint and the selected joint.
 void joint_outputs(Halui &h, const EMC_STAT &s)
 {
     for (int j = 0; j < h.cfg.joints; j++) joint_status(h.pins.joint[j].status, s.motion.joint[j]);
     joint_status(h.pins.joint_selected_status, s.motion.joint[h.selected_joint]);
 }
 
+// Axis positions, tool offsets, tool number and diameter.
 void axis_outputs(Halui &h, const EMC_STAT &s)
 {
     double rel[EMCMOT_MAX_AXIS];

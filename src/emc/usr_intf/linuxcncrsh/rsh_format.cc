@@ -12,11 +12,13 @@ namespace {
 // Units within this of a known value get its name (LinuxCNC's closeness).
 const double UNITS_CLOSENESS = 0.0001;
 
+// a is one of the known unit values b.
 bool close_to(double a, double b)
 {
     return std::fabs(a - b) < UNITS_CLOSENESS;
 }
 
+// Blanks separate words.
 bool is_blank(char c)
 {
     return c == ' ' || c == '\t';
@@ -52,12 +54,14 @@ std::string rsh_rest(const std::string &line, int n)
     return line.substr(i, end - i);
 }
 
+// Upper-case copy.
 std::string rsh_upper(std::string s)
 {
     for (char &c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
     return s;
 }
 
+// Lower-case copy.
 std::string rsh_lower(std::string s)
 {
     for (char &c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
@@ -110,6 +114,7 @@ int rsh_parse_axis(const std::string &word)
     return -2;
 }
 
+// Linear units per mm as a name.
 const char *rsh_linear_units_name(double u)
 {
     if (close_to(u, 1.0 / 25.4)) return "INCH";
@@ -118,6 +123,7 @@ const char *rsh_linear_units_name(double u)
     return "CUSTOM";
 }
 
+// Angular units per degree as a name.
 const char *rsh_angular_units_name(double u)
 {
     if (close_to(u, 1.0)) return "DEG";
@@ -126,6 +132,7 @@ const char *rsh_angular_units_name(double u)
     return "CUSTOM";
 }
 
+// The interpreter's units as a name.
 const char *rsh_program_units_name(int units)
 {
     switch (units) {
@@ -163,6 +170,7 @@ int rsh_program_line(const EMC_TASK_STAT &t, int start_line)
     return t.currentLine;
 }
 
+// A real as %f.
 std::string rsh_real(double v)
 {
     char buf[64];

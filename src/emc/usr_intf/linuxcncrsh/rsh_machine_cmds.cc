@@ -47,12 +47,14 @@ R spindles(RshSession &s, const EMC_STAT &st, const RshArgs &a, size_t i, int df
     return R::ok;
 }
 
+// get estop: ON while in E-stop.
 R get_estop(RshServer &sv, RshSession &s, const RshArgs &)
 {
     const EMC_STAT *st = rsh_status(sv, s);
     return st ? on_off_reply(s, "ESTOP", st->task.state == EMC_TASK_STATE_ESTOP) : R::nak;
 }
 
+// set estop on|off: E-stop, or E-stop reset.
 R set_estop(RshServer &sv, RshSession &s, const RshArgs &a)
 {
     int on = on_off_arg(a);
@@ -62,12 +64,14 @@ R set_estop(RshServer &sv, RshSession &s, const RshArgs &a)
     });
 }
 
+// get machine: ON while the machine is on.
 R get_machine(RshServer &sv, RshSession &s, const RshArgs &)
 {
     const EMC_STAT *st = rsh_status(sv, s);
     return st ? on_off_reply(s, "MACHINE", st->task.state == EMC_TASK_STATE_ON) : R::nak;
 }
 
+// set machine on|off.
 R set_machine(RshServer &sv, RshSession &s, const RshArgs &a)
 {
     int on = on_off_arg(a);
@@ -77,6 +81,7 @@ R set_machine(RshServer &sv, RshSession &s, const RshArgs &a)
     });
 }
 
+// get mode: MANUAL, AUTO or MDI.
 R get_mode(RshServer &sv, RshSession &s, const RshArgs &)
 {
     const EMC_STAT *st = rsh_status(sv, s);
@@ -86,6 +91,7 @@ R get_mode(RshServer &sv, RshSession &s, const RshArgs &)
     return R::ok;
 }
 
+// set mode manual|auto|mdi.
 R set_mode(RshServer &sv, RshSession &s, const RshArgs &a)
 {
     std::string w = a.count() == 1 ? rsh_lower(a.at(0)) : "";
@@ -95,6 +101,7 @@ R set_mode(RshServer &sv, RshSession &s, const RshArgs &a)
     return send<EMC_TASK_SET_MODE>(sv, s, [&](EMC_TASK_SET_MODE &m) { m.mode = mode; });
 }
 
+// get mist / set mist on|off.
 R get_mist(RshServer &sv, RshSession &s, const RshArgs &)
 {
     const EMC_STAT *st = rsh_status(sv, s);
@@ -109,6 +116,7 @@ R set_mist(RshServer &sv, RshSession &s, const RshArgs &a)
     return send<EMC_COOLANT_MIST_OFF>(sv, s, [](EMC_COOLANT_MIST_OFF &) {});
 }
 
+// get flood / set flood on|off.
 R get_flood(RshServer &sv, RshSession &s, const RshArgs &)
 {
     const EMC_STAT *st = rsh_status(sv, s);
@@ -209,12 +217,14 @@ R percent_reply(RshSession &s, const char *name, double scale)
     return R::ok;
 }
 
+// get feed_override: whole percent.
 R get_feed_override(RshServer &sv, RshSession &s, const RshArgs &)
 {
     const EMC_STAT *st = rsh_status(sv, s);
     return st ? percent_reply(s, "FEED_OVERRIDE", st->motion.traj.scale) : R::nak;
 }
 
+// set feed_override <percent>.
 R set_feed_override(RshServer &sv, RshSession &s, const RshArgs &a)
 {
     double pct;
@@ -251,6 +261,7 @@ R set_spindle_override(RshServer &sv, RshSession &s, const RshArgs &a)
     return r;
 }
 
+// get tool: the tool in the spindle.
 R get_tool(RshServer &sv, RshSession &s, const RshArgs &)
 {
     const EMC_STAT *st = rsh_status(sv, s);
@@ -259,6 +270,7 @@ R get_tool(RshServer &sv, RshSession &s, const RshArgs &)
     return R::ok;
 }
 
+// get tool_offset: the length offset in force (Z).
 R get_tool_offset(RshServer &sv, RshSession &s, const RshArgs &)
 {
     const EMC_STAT *st = rsh_status(sv, s);
@@ -301,6 +313,7 @@ R set_load_tool_table(RshServer &sv, RshSession &s, const RshArgs &a)
     return rsh_send(sv, s, m);
 }
 
+// get probe_tripped: the probe tripped since the last clear.
 R get_probe_tripped(RshServer &sv, RshSession &s, const RshArgs &)
 {
     const EMC_STAT *st = rsh_status(sv, s);
@@ -309,6 +322,7 @@ R get_probe_tripped(RshServer &sv, RshSession &s, const RshArgs &)
     return R::ok;
 }
 
+// get probe_value: the probe input now.
 R get_probe_value(RshServer &sv, RshSession &s, const RshArgs &)
 {
     const EMC_STAT *st = rsh_status(sv, s);
@@ -317,6 +331,7 @@ R get_probe_value(RshServer &sv, RshSession &s, const RshArgs &)
     return R::ok;
 }
 
+// set probe_clear: forget that the probe tripped.
 R set_probe_clear(RshServer &sv, RshSession &s, const RshArgs &)
 {
     return send<EMC_TRAJ_CLEAR_PROBE_TRIPPED_FLAG>(sv, s, [](EMC_TRAJ_CLEAR_PROBE_TRIPPED_FLAG &) {});
@@ -335,6 +350,7 @@ R set_probe(RshServer &sv, RshSession &s, const RshArgs &a)
     return rsh_send(sv, s, m);
 }
 
+// get teleop_enable: ON while axes jog (teleop mode).
 R get_teleop_enable(RshServer &sv, RshSession &s, const RshArgs &)
 {
     const EMC_STAT *st = rsh_status(sv, s);
@@ -350,6 +366,7 @@ R set_teleop_enable(RshServer &sv, RshSession &s, const RshArgs &a)
     return send<EMC_TRAJ_SET_TELEOP_ENABLE>(sv, s, [&](EMC_TRAJ_SET_TELEOP_ENABLE &m) { m.enable = on; });
 }
 
+// get kinematics_type: 1 identity, 2 serial, 3 parallel, 4 custom.
 R get_kinematics_type(RshServer &sv, RshSession &s, const RshArgs &)
 {
     const EMC_STAT *st = rsh_status(sv, s);
@@ -358,6 +375,7 @@ R get_kinematics_type(RshServer &sv, RshSession &s, const RshArgs &)
     return R::ok;
 }
 
+// get override_limits: whether joint 0's limits are overridden.
 R get_override_limits(RshServer &sv, RshSession &s, const RshArgs &)
 {
     const EMC_STAT *st = rsh_status(sv, s);
@@ -374,6 +392,7 @@ R set_override_limits(RshServer &sv, RshSession &s, const RshArgs &a)
     return send<EMC_JOINT_OVERRIDE_LIMITS>(sv, s, [&](EMC_JOINT_OVERRIDE_LIMITS &m) { m.joint = on ? 0 : -1; });
 }
 
+// get optional_stop / set optional_stop on|off (M1).
 R get_optional_stop(RshServer &sv, RshSession &s, const RshArgs &)
 {
     const EMC_STAT *st = rsh_status(sv, s);

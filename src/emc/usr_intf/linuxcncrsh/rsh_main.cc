@@ -15,6 +15,7 @@ namespace {
 
 volatile std::sig_atomic_t stop_requested = 0;
 
+// SIGTERM/SIGINT/SIGHUP: stop serving.
 void on_signal(int) { stop_requested = 1; }
 
 const char USAGE[] =
@@ -118,6 +119,7 @@ bool read_ini(RshServer *&sv, const RshOptions &opt)
     return true;
 }
 
+// Signals end the server; a vanished client must not kill it (SIGPIPE).
 void install_signals()
 {
     struct sigaction sa;
@@ -155,6 +157,7 @@ int rsh_parse_options(int argc, char **argv, RshOptions &o)
     return 0;
 }
 
+// Options, INI file, listening sockets, then serve until shutdown or a signal.
 int main(int argc, char **argv)
 {
     RshOptions opt;

@@ -72,6 +72,8 @@ R axis_values(RshServer &sv, RshSession &s, const RshArgs &a, const char *name,
     return R::ok;
 }
 
+// Per-axis values of the position reports: commanded and actual position in machine
+// coordinates, the same in the current coordinate system.
 void abs_cmd(const EMC_STAT &st, double *v)
 {
     for (int i = 0; i < EMCMOT_MAX_AXIS; i++) v[i] = ui_pose_at(st.motion.traj.position, i);
@@ -88,11 +90,13 @@ void pos_offset(const EMC_STAT &st, double *v)
     for (int i = 0; i < EMCMOT_MAX_AXIS; i++)
         v[i] = ui_pose_at(st.task.g5x_offset, i) + ui_pose_at(st.task.g92_offset, i);
 }
+// Velocity of each axis.
 void axis_velocity(const EMC_STAT &st, double *v)
 {
     for (int i = 0; i < EMCMOT_MAX_AXIS; i++) v[i] = st.motion.axis[i].velocity;
 }
 
+// The position reports.
 R get_abs_cmd_pos(RshServer &sv, RshSession &s, const RshArgs &a) { return axis_values(sv, s, a, "ABS_CMD_POS", abs_cmd); }
 R get_abs_act_pos(RshServer &sv, RshSession &s, const RshArgs &a) { return axis_values(sv, s, a, "ABS_ACT_POS", abs_act); }
 R get_rel_cmd_pos(RshServer &sv, RshSession &s, const RshArgs &a) { return axis_values(sv, s, a, "REL_CMD_POS", rel_cmd); }
@@ -116,6 +120,7 @@ R joint_words(RshServer &sv, RshSession &s, const RshArgs &a, const char *name,
     return R::ok;
 }
 
+// How each joint report describes a joint.
 std::string pos_word(const EMC_JOINT_STAT &j) { return rsh_real(j.input); }
 std::string velocity_word(const EMC_JOINT_STAT &j) { return rsh_real(j.velocity); }
 std::string fault_word(const EMC_JOINT_STAT &j) { return j.fault ? "FAULT" : "OK"; }
@@ -134,6 +139,7 @@ std::string units_word(const EMC_JOINT_STAT &j)
     return j.jointType == EMC_ANGULAR ? rsh_angular_units_name(j.units) : rsh_linear_units_name(j.units);
 }
 
+// The joint reports.
 R get_joint_pos(RshServer &sv, RshSession &s, const RshArgs &a) { return joint_words(sv, s, a, "JOINT_POS", pos_word); }
 R get_joint_velocity(RshServer &sv, RshSession &s, const RshArgs &a) { return joint_words(sv, s, a, "JOINT_VELOCITY", velocity_word); }
 R get_joint_fault(RshServer &sv, RshSession &s, const RshArgs &a) { return joint_words(sv, s, a, "JOINT_FAULT", fault_word); }

@@ -45,6 +45,7 @@ R set_open(RshServer &sv, RshSession &s, const RshArgs &a)
     return rsh_send(sv, s, m);
 }
 
+// get open: the last file opened here.
 R get_open(RshServer &sv, RshSession &s, const RshArgs &)
 {
     return say(s, "OPEN", sv.last_opened.empty() ? "NONE" : sv.last_opened);
@@ -68,6 +69,7 @@ R set_pause(RshServer &sv, RshSession &s, const RshArgs &a)
     return plain<EMC_TASK_PLAN_PAUSE>(sv, s, a);
 }
 
+// get program: the open program, or NONE.
 R get_program(RshServer &sv, RshSession &s, const RshArgs &)
 {
     const EMC_STAT *st = rsh_status(sv, s);
@@ -75,6 +77,7 @@ R get_program(RshServer &sv, RshSession &s, const RshArgs &)
     return say(s, "PROGRAM", st->task.file[0] ? st->task.file : "NONE");
 }
 
+// get program_line: the line executing.
 R get_program_line(RshServer &sv, RshSession &s, const RshArgs &)
 {
     const EMC_STAT *st = rsh_status(sv, s);
@@ -82,6 +85,7 @@ R get_program_line(RshServer &sv, RshSession &s, const RshArgs &)
     return say(s, "PROGRAM_LINE", std::to_string(rsh_program_line(st->task, sv.program_start_line)));
 }
 
+// get program_status: IDLE, RUNNING or PAUSED.
 R get_program_status(RshServer &sv, RshSession &s, const RshArgs &)
 {
     const EMC_STAT *st = rsh_status(sv, s);
@@ -92,12 +96,14 @@ R get_program_status(RshServer &sv, RshSession &s, const RshArgs &)
     return say(s, "PROGRAM_STATUS", what);
 }
 
+// get program_codes: active G codes, F and S.
 R get_program_codes(RshServer &sv, RshSession &s, const RshArgs &)
 {
     const EMC_STAT *st = rsh_status(sv, s);
     return st ? say(s, "PROGRAM_CODES", rsh_program_codes(st->task)) : R::nak;
 }
 
+// get program_units (program_linear_units): the interpreter's units.
 R get_program_units(RshServer &sv, RshSession &s, const RshArgs &)
 {
     const EMC_STAT *st = rsh_status(sv, s);
@@ -110,12 +116,14 @@ R get_program_angular_units(RshServer &, RshSession &s, const RshArgs &)
     return say(s, "PROGRAM_ANGULAR_UNITS", "DEG");
 }
 
+// get user_linear_units: the machine's linear units.
 R get_user_linear_units(RshServer &sv, RshSession &s, const RshArgs &)
 {
     const EMC_STAT *st = rsh_status(sv, s);
     return st ? say(s, "USER_LINEAR_UNITS", rsh_linear_units_name(st->motion.traj.linearUnits)) : R::nak;
 }
 
+// get user_angular_units: the machine's angular units.
 R get_user_angular_units(RshServer &sv, RshSession &s, const RshArgs &)
 {
     const EMC_STAT *st = rsh_status(sv, s);
@@ -136,6 +144,7 @@ const char *unit_name(RshUnits u)
     }
 }
 
+// get display_linear_units: the chosen units, or the program's with AUTO.
 R get_display_linear_units(RshServer &sv, RshSession &s, const RshArgs &)
 {
     if (s.linear_units != RshUnits::automatic) return say(s, "DISPLAY_LINEAR_UNITS", unit_name(s.linear_units));
@@ -143,16 +152,19 @@ R get_display_linear_units(RshServer &sv, RshSession &s, const RshArgs &)
     return st ? say(s, "DISPLAY_LINEAR_UNITS", rsh_program_units_name(st->task.programUnits)) : R::nak;
 }
 
+// get display_angular_units: the chosen units, or degrees with AUTO.
 R get_display_angular_units(RshServer &, RshSession &s, const RshArgs &)
 {
     return say(s, "DISPLAY_ANGULAR_UNITS", s.angular_units == RshUnits::automatic ? "DEG" : unit_name(s.angular_units));
 }
 
+// get linear_unit_conversion.
 R get_linear_conversion(RshServer &, RshSession &s, const RshArgs &)
 {
     return say(s, "LINEAR_UNIT_CONVERSION", unit_name(s.linear_units));
 }
 
+// get angular_unit_conversion.
 R get_angular_conversion(RshServer &, RshSession &s, const RshArgs &)
 {
     return say(s, "ANGULAR_UNIT_CONVERSION", unit_name(s.angular_units));

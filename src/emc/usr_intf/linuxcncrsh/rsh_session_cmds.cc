@@ -19,6 +19,7 @@ R flag_get(RshSession &s, const char *name, bool value)
     return R::ok;
 }
 
+// Set a session flag from an on/off argument.
 R flag_set(const RshArgs &a, bool *flag)
 {
     int v = a.count() == 1 ? rsh_parse_on_off(a.at(0)) : -1;
@@ -27,6 +28,7 @@ R flag_set(const RshArgs &a, bool *flag)
     return R::ok;
 }
 
+// echo, verbose and enable.
 R get_echo(RshServer &, RshSession &s, const RshArgs &) { return flag_get(s, "ECHO", s.echo); }
 R set_echo(RshServer &, RshSession &s, const RshArgs &a) { return flag_set(a, &s.echo); }
 R get_verbose(RshServer &, RshSession &s, const RshArgs &) { return flag_get(s, "VERBOSE", s.verbose); }
@@ -47,6 +49,7 @@ R set_enable(RshServer &sv, RshSession &s, const RshArgs &a)
     return R::ok;
 }
 
+// get comm_mode: ASCII.
 R get_comm_mode(RshServer &, RshSession &s, const RshArgs &)
 {
     s.reply("COMM_MODE ASCII");
@@ -59,6 +62,7 @@ R set_comm_mode(RshServer &, RshSession &, const RshArgs &a)
     return a.count() == 1 && rsh_lower(a.at(0)) == "ascii" ? R::ok : R::nak;
 }
 
+// get comm_prot: the session's protocol version.
 R get_comm_prot(RshServer &, RshSession &s, const RshArgs &)
 {
     s.reply("COMM_PROT " + s.prot_version);
@@ -74,12 +78,14 @@ R set_comm_prot(RshServer &, RshSession &s, const RshArgs &a)
     return R::ok;
 }
 
+// get inifile: the configuration's INI file.
 R get_inifile(RshServer &sv, RshSession &s, const RshArgs &)
 {
     s.reply("INIFILE " + sv.ini_path);
     return R::ok;
 }
 
+// get plat: the platform.
 R get_plat(RshServer &, RshSession &s, const RshArgs &)
 {
     s.reply("PLAT Linux");
@@ -99,6 +105,7 @@ R get_ini(RshServer &sv, RshSession &s, const RshArgs &a)
     return R::ok;
 }
 
+// get debug: the debug flags.
 R get_debug(RshServer &sv, RshSession &s, const RshArgs &)
 {
     s.reply("DEBUG " + std::to_string(sv.debug));
@@ -126,12 +133,14 @@ bool parse_wait(const std::string &w, UiWait *mode)
     return true;
 }
 
+// get wait_mode (set_wait): RECEIVED or DONE.
 R get_wait_mode(RshServer &, RshSession &s, const RshArgs &)
 {
     s.reply(s.wait_mode == UiWait::done ? "WAIT_MODE DONE" : "WAIT_MODE RECEIVED");
     return R::ok;
 }
 
+// set wait_mode received|done.
 R set_wait_mode(RshServer &, RshSession &s, const RshArgs &a)
 {
     return a.count() == 1 && parse_wait(a.at(0), &s.wait_mode) ? R::ok : R::nak;
@@ -154,6 +163,7 @@ R set_wait(RshServer &sv, RshSession &s, const RshArgs &a)
     return rc == 0 ? R::ok : R::nak;
 }
 
+// get timeout: seconds a wait may take (0: no limit).
 R get_timeout(RshServer &, RshSession &s, const RshArgs &)
 {
     s.reply("TIMEOUT " + rsh_real(s.timeout_s));
@@ -169,6 +179,7 @@ R set_timeout(RshServer &, RshSession &s, const RshArgs &a)
     return R::ok;
 }
 
+// get update: AUTO or NONE.
 R get_update(RshServer &, RshSession &s, const RshArgs &)
 {
     s.reply(s.update_auto ? "UPDATE AUTO" : "UPDATE NONE");
@@ -188,6 +199,7 @@ R set_update(RshServer &sv, RshSession &s, const RshArgs &a)
     return R::ok;
 }
 
+// set update_status: take a new status snapshot for update none.
 R set_update_status(RshServer &sv, RshSession &s, const RshArgs &a)
 {
     if (a.count() != 0) return R::nak;
@@ -205,10 +217,12 @@ R message(RshServer &sv, RshSession &s, const char *name, std::string &text)
     return R::ok;
 }
 
+// The three message texts.
 R get_error(RshServer &sv, RshSession &s, const RshArgs &) { return message(sv, s, "ERROR", sv.error_text); }
 R get_operator_text(RshServer &sv, RshSession &s, const RshArgs &) { return message(sv, s, "OPERATOR_TEXT", sv.operator_text); }
 R get_operator_display(RshServer &sv, RshSession &s, const RshArgs &) { return message(sv, s, "OPERATOR_DISPLAY", sv.operator_display); }
 
+// get time: seconds since 1970.
 R get_time(RshServer &, RshSession &s, const RshArgs &)
 {
     struct timeval tv;
