@@ -59,9 +59,13 @@ void block_delete(Halui &h, int on)
     halui_send(h, m);
 }
 
-// Run the open program from its start.
+// Run the open program from its start (nothing to run while no program was opened).
 void program_run(Halui &h)
 {
+    if (halui_machine_ready(h) && !h.client.status().task.file[0]) {
+        fprintf(stderr, "halui: program.run: no program is open\n");
+        return;
+    }
     EMC_TASK_PLAN_RUN m;
     m.line = 0;
     halui_send(h, m);
