@@ -54,6 +54,8 @@ public:
 
     // Waits end early with -EINTR once *flag is non-zero (a signal handler's flag).
     void set_stop_flag(const volatile std::sig_atomic_t *flag) { stop_flag_ = flag; }
+    // True once the stop flag was raised (loops of callers end then too).
+    bool stop_requested() const { return stopped(); }
     // Why the last call failed.
     const std::string &error() const { return error_; }
     const std::string &nml_file() const { return nml_file_; }

@@ -1,5 +1,6 @@
 // rsh_motion_cmds.cc: linuxcncrsh subcommands for positions, joints and axes: position reports, joint state, homing, jogging, heartbeat waits.
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 
 #include "rsh.hh"
@@ -246,7 +247,7 @@ R heartbeat_wait(RshServer &sv, long periods)
     uint64_t start = sv.client.status().motion.heartbeat;
     double deadline = ui_now_s() + HEARTBEAT_WAIT_S;
     while (sv.client.status().motion.heartbeat - start < static_cast<uint64_t>(periods)) {
-        if (ui_now_s() > deadline) return R::nak;
+        if (ui_now_s() > deadline || sv.client.stop_requested()) return R::nak;
         if (sv.client.wait_status_change(0.05) == -ENOTCONN) return R::nak;
         sv.client.poll();
     }
@@ -289,7 +290,7 @@ R set_joint_wait_homed(RshServer &sv, RshSession &s, const RshArgs &a)
         bool bad = false;
         if (!sv.client.have_status()) return R::nak;
         if (homed_yet(sv.client.status(), joint, &bad)) return heartbeat_wait(sv, 1);
-        if (bad || ui_now_s() > deadline) return R::nak;
+        if (bad || ui_now_s() > deadline || sv.client.stop_requested()) return R::nak;
         if (sv.client.wait_status_change(0.05) == -ENOTCONN) return R::nak;
     }
 }
