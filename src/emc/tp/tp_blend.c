@@ -26,7 +26,7 @@ static int build_quintic(tp_quintic_t *q, const tp_jet_t *a, const tp_jet_t *b, 
             return -1;
         double step = len - lam;
         lam = len;
-        if (fabs(step) <= 1e-10 * len)
+        if (fabs(step) <= 1e-6 * len)
             break;
     }
     tp_quintic_hermite(q, a, b, lam);

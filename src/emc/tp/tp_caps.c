@@ -4,7 +4,11 @@
 
 /* Derivative bounds below this count as zero. */
 #define TP_CAPS_TINY 1e-12
-#define TP_CAPS_ITER 26
+#define TP_CAPS_ITER 14
+/* Lowest cap tried, as a share of the highest (the bisection runs on a log scale). */
+#define TP_CAPS_V_FLOOR 1e-12
+/* Weight of the speed-change time in the choice of the reserve. */
+#define TP_CAPS_CHANGE_SHARE 0.1
 
 /* Largest x with k x <= limit over the limited axes that move (INFINITY if none). */
 static double ratio_min(const double *lim, const double *k)
@@ -75,14 +79,32 @@ static double usable_acc(const tp_bounds_t *b, const tp_axlim_t *l, double v, in
     return a;
 }
 
-/* Compute the caps: the fastest speed that keeps the reserves, then what is left at that speed. */
-void tp_caps_compute(const tp_bounds_t *b, const tp_axlim_t *l, double v_need, int with_jerk,
-                     tp_caps_t *out)
+/* Caps at speed v: what is left of the limits there, at least reserve share r of the line's. */
+static void caps_at_speed(const tp_bounds_t *b, const tp_axlim_t *l, double v, int with_jerk, double r,
+                          tp_caps_t *out)
 {
     double a_line = ratio_min(l->acc, b->d1);
     double j_line = with_jerk ? ratio_min(l->jerk, b->d1) : 0.0;
-    double a_keep = TP_CAPS_ACC_RESERVE * a_line;
-    double j_keep = with_jerk ? TP_CAPS_JERK_RESERVE * j_line : 0.0;
+    double a_keep = r * a_line, j_keep = with_jerk ? TP_CAPS_RESERVE * j_line : 0.0;
+    out->v = v;
+    out->a = fmin(usable_acc(b, l, v, with_jerk, j_keep), a_line);
+    if (!(out->a > 0.0))
+        out->a = a_keep > 0.0 ? a_keep : 1e-9;
+    out->j = with_jerk ? fmin(jerk_left(b, l, v, out->a), j_line) : 0.0;
+    if (with_jerk && !(out->j > 0.0))
+        out->j = j_keep > 0.0 ? j_keep : 1e-9;
+    /* trapezoid: min over axes of (A - |d2| w^2) / |d1| is concave in w^2, so above its chord */
+    out->a_rest = with_jerk || !(a_line > out->a) ? out->a : a_line;
+}
+
+/* Caps keeping reserve share r of the straight-line acceleration and jerk for speed changes. */
+static void caps_with_reserve(const tp_bounds_t *b, const tp_axlim_t *l, double v_need, int with_jerk,
+                              double r, tp_caps_t *out)
+{
+    double a_line = ratio_min(l->acc, b->d1);
+    double j_line = with_jerk ? ratio_min(l->jerk, b->d1) : 0.0;
+    double a_keep = r * a_line;
+    double j_keep = with_jerk ? TP_CAPS_RESERVE * j_line : 0.0;
     double v_hi = fmin(ratio_min(l->vel, b->d1), v_need);
     if (!isfinite(v_hi))
         v_hi = 1e9;
@@ -93,9 +115,11 @@ void tp_caps_compute(const tp_bounds_t *b, const tp_axlim_t *l, double v_need, i
             if (l->acc[i] > 0.0 && b->d2[i] > TP_CAPS_TINY)
                 v = fmin(v, sqrt(fmax(0.0, l->acc[i] - a_keep * b->d1[i]) / b->d2[i]));
     } else if (usable_acc(b, l, v_hi, with_jerk, j_keep) < a_keep) {
-        double lo = 0.0, hi = v_hi;
+        /* geometric bisection: the answer may lie many decades below v_hi; a cap is never zero
+         * (a region that may not be crossed would stall the executor) */
+        double lo = v_hi * TP_CAPS_V_FLOOR, hi = v_hi;
         for (int k = 0; k < TP_CAPS_ITER; k++) {
-            double mid = 0.5 * (lo + hi);
+            double mid = sqrt(lo * hi);
             if (usable_acc(b, l, mid, with_jerk, j_keep) >= a_keep)
                 lo = mid;
             else
@@ -103,11 +127,36 @@ void tp_caps_compute(const tp_bounds_t *b, const tp_axlim_t *l, double v_need, i
         }
         v = lo;
     }
-    out->v = v;
-    out->a = fmin(usable_acc(b, l, v, with_jerk, j_keep), a_line);
-    if (!(out->a > 0.0))
-        out->a = a_keep > 0.0 ? a_keep : 1e-9;
-    out->j = with_jerk ? fmin(jerk_left(b, l, v, out->a), j_line) : 0.0;
-    if (with_jerk && !(out->j > 0.0))
-        out->j = j_keep > 0.0 ? j_keep : 1e-9;
+    caps_at_speed(b, l, v, with_jerk, r, out);
+}
+
+/* Rough time a piece of length len costs with caps c: crossing it at the cap plus a share of the
+ * time to change speed by the cap inside it. */
+static double caps_cost(const tp_caps_t *c, double len)
+{
+    if (!(c->v > 0.0))
+        return INFINITY;
+    return len / c->v + TP_CAPS_CHANGE_SHARE * c->v / c->a;
+}
+
+/* Compute the caps.  A sharply curved piece spends most of the limits on its curvature: keeping a
+ * smaller share for speed changes raises its speed, which pays on short pieces (the speed then
+ * changes mostly outside them); the share with the least estimated time wins. */
+void tp_caps_compute(const tp_bounds_t *b, const tp_axlim_t *l, double v_need, int with_jerk,
+                     double len, tp_caps_t *out)
+{
+    static const double reserve[] = {TP_CAPS_RESERVE, TP_CAPS_RESERVE / 4.0, TP_CAPS_RESERVE / 16.0};
+    caps_with_reserve(b, l, v_need, with_jerk, reserve[0], out);
+    if (out->v >= fmin(ratio_min(l->vel, b->d1), v_need))
+        return;                         /* not held back by the curvature: nothing to gain */
+    double best = caps_cost(out, len);
+    for (int k = 1; k < (int)(sizeof(reserve) / sizeof(reserve[0])); k++) {
+        tp_caps_t c;
+        caps_with_reserve(b, l, v_need, with_jerk, reserve[k], &c);
+        double cost = caps_cost(&c, len);
+        if (!(c.v > out->v) || !(cost < best))
+            break;
+        *out = c;
+        best = cost;
+    }
 }

@@ -16,14 +16,18 @@ typedef struct tp_caps {
     double v;
     double a;
     double j;                   /* 0 when jerk is not limited */
+    double a_rest;              /* tangential acceleration usable at rest (trapezoid: the usable
+                                 * acceleration at speed w is at least the chord from a_rest at 0
+                                 * to a at v, in w^2; S-curve: a) */
 } tp_caps_t;
 
-/* Share of the tangential capability a curved piece keeps (the rest goes to curvature). */
-#define TP_CAPS_ACC_RESERVE 0.25
-#define TP_CAPS_JERK_RESERVE 0.25
+/* Share of the straight-line acceleration and jerk a curved piece keeps for speed changes (the
+ * rest goes to curvature); a quarter or a sixteenth of it when that makes a short piece faster. */
+#define TP_CAPS_RESERVE 0.25
 
-/* Caps of a piece with derivative bounds b, wanting speed up to v_need; with_jerk 0 = trapezoid. */
+/* Caps of a piece of length len with derivative bounds b, wanting speed up to v_need;
+ * with_jerk 0 = trapezoid. */
 void tp_caps_compute(const tp_bounds_t *b, const tp_axlim_t *lim, double v_need, int with_jerk,
-                     tp_caps_t *out);
+                     double len, tp_caps_t *out);
 
 #endif

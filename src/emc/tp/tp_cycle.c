@@ -68,6 +68,9 @@ static void track_segments(tp_planner_t *tp, const tp_cycle_in_t *in, tp_cycle_o
         tp->seg_done = owner;
     const tp_region_t *last = tp->reg_head > 0 ? tp_reg_at(tp, tp->reg_head - 1) : NULL;
     int at_end = last && tp->ex.s >= last->s0 + last->len && tp->ex.v <= 0.0;
+    /* a rigid tap is a region of no length: the end is reached only once it has run */
+    if (last && (last->flags & TP_REG_TAP) && tp->ex.cleared_stop != tp->reg_head)
+        at_end = 0;
     int all_emitted = !(tp->prov.valid && tp->prov.lazy);
     if (at_end && all_emitted && tp->ex.tap == TP_TAP_NONE && !tp->ex.waiting &&
         !tp_sync_end_hold(tp, in))

@@ -60,9 +60,11 @@ static void region_add(tp_planner_t *tp, const tp_region_t *piece)
     if (tp->reg_open && tp->reg_head > tp->reg_tail) {
         tp_region_t *r = tp_reg_at(tp, tp->reg_head - 1);
         int same = piece->v_mach == r->v_mach && piece->a == r->a && piece->j == r->j &&
+                   piece->a_rest == r->a_rest &&
                    piece->v_feed == r->v_feed && piece->v_rapid == r->v_rapid &&
                    piece->sync_k == r->sync_k;
         int faster = piece->v_mach >= r->v_mach && piece->a >= r->a && piece->j >= r->j &&
+                     piece->a_rest >= r->a_rest &&
                      piece->v_feed >= r->v_feed && piece->v_rapid >= r->v_rapid &&
                      piece->sync_k >= r->sync_k;
         int compatible = !(piece->flags & (TP_REG_STOP | TP_REG_TAP)) && piece->flags == r->flags &&
@@ -73,6 +75,7 @@ static void region_add(tp_planner_t *tp, const tp_region_t *piece)
         if (compatible && (same || (short_r && short_p && (faster || region_far(tp, r))))) {
             r->v_mach = fmin(r->v_mach, piece->v_mach);
             r->a = fmin(r->a, piece->a);
+            r->a_rest = fmin(r->a_rest, piece->a_rest);  /* the smaller chord holds for both */
             r->j = fmin(r->j, piece->j);
             r->v_feed = fmin(r->v_feed, piece->v_feed);
             r->v_rapid = fmin(r->v_rapid, piece->v_rapid);
@@ -107,7 +110,7 @@ static void piece_region(tp_planner_t *tp, const tp_geo_t *g, double u0, double 
     tp_bounds_t b;
     tp_caps_t c;
     tp_geo_bounds(g, u0, u1, &b);
-    tp_caps_compute(&b, lim, need_speed(tp, owner), tp->type == TP_PLANNER_SCURVE, &c);
+    tp_caps_compute(&b, lim, need_speed(tp, owner), tp->type == TP_PLANNER_SCURVE, u1 - u0, &c);
     if (!isfinite(c.v))
         c.v = 1e9;
     memset(r, 0, sizeof(*r));
@@ -116,6 +119,7 @@ static void piece_region(tp_planner_t *tp, const tp_geo_t *g, double u0, double 
     double v_need = need_speed(tp, owner);
     r->v_mach = c.v >= v_need ? v_need : quantize(c.v);
     r->a = quantize(c.a);
+    r->a_rest = fmax(r->a, quantize(c.a_rest));
     r->j = quantize(c.j);
     r->v_feed = r->v_rapid = INFINITY;
     r->sync_k = INFINITY;
@@ -193,14 +197,27 @@ void tp_emit_piece(tp_planner_t *tp, tp_seg_t *owner, tp_seg_t *geo_seg, int is_
     emit_elem(tp, owner, geo_seg, is_blend, u0, u1, &owner->lim, flags);
 }
 
-/* Emit the blend stored in a (from a into b): first half owned by a_owner, second by b_owner. */
+/* Emit the blend stored in a (from a into b): first half owned by a_owner, second by b_owner, each
+ * half in TP_BLEND_PIECES / 2 pieces with their own caps (curvature is low near the ends). */
 void tp_emit_blend(tp_planner_t *tp, tp_seg_t *a, tp_seg_t *a_owner, tp_seg_t *b, tp_seg_t *b_owner)
 {
     tp_axlim_t lim;
-    double half = 0.5 * a->blend.len;
+    tp_region_t r[TP_BLEND_PIECES];
+    double len = a->blend.len, u[TP_BLEND_PIECES + 1], j = INFINITY;
     lim_min(&lim, &a->lim, &b->lim);
-    emit_elem(tp, a_owner, a, 1, 0.0, half, &lim, 0);
-    emit_elem(tp, b_owner, a, 1, half, a->blend.len, &lim, 0);
+    for (int k = 0; k <= TP_BLEND_PIECES; k++)
+        u[k] = k == TP_BLEND_PIECES ? len : len * k / TP_BLEND_PIECES;
+    for (int k = 0; k < TP_BLEND_PIECES; k++) {
+        piece_region(tp, &a->blend, u[k], u[k + 1], &lim, 2 * k < TP_BLEND_PIECES ? a_owner : b_owner,
+                     0, &r[k]);
+        j = fmin(j, r[k].j);
+    }
+    /* one jerk for the whole blend: pieces of alternating jerk would let an acceleration started
+     * under the larger one run into the smaller one unsettled */
+    for (int k = 0; k < TP_BLEND_PIECES; k++) {
+        r[k].j = j;
+        tp_emit_region(tp, 2 * k < TP_BLEND_PIECES ? a_owner : b_owner, a, 1, u[k], u[k + 1], &r[k]);
+    }
 }
 
 /* Remember the state before the provisional part. */

@@ -1,15 +1,13 @@
 /* tp_exec.c: moving along the path for one cycle: go as fast as allowed, switch to braking at the last safe instant. */
 #include <math.h>
 #include "tp_internal.h"
-#ifdef TP_DEBUG
-#include <stdio.h>
-#include <stdlib.h>
-#endif
 
-/* Bisection steps for the switch time (2^-50 of a cycle lands stops to far below a nanometre). */
-#define TP_SWITCH_ITER 50
+/* Bisection steps for the switch time (2^-36 of a cycle: far below a nanometre at any speed). */
+#define TP_SWITCH_ITER 36
 /* Targets checked at once: the nearest and the two after it. */
 #define TP_CHECK_TARGETS 3
+/* Later targets a carried acceleration is checked against at most. */
+#define TP_MOMENTUM_TARGETS 8
 /* Sub-steps per cycle (target crossings); a cycle never loops for ever. */
 #define TP_SUBSTEPS (2 * TP_WINDOW_MAX + 4)
 
@@ -28,26 +26,61 @@ static double settle_dist(const tp_state1_t *st, const tp_lim1_t *lim)
     return st->v * t + 0.5 * st->a * t * t - lim->jerk * t * t * t / 6.0;
 }
 
-/* A state still accelerating may carry that acceleration past a target; when a later target is
- * slower than where that momentum would end (with the smaller jerk beyond), the acceleration must
- * have settled before the target in front of it: the backward pass assumed arrival at rest
- * acceleration.  1 when every such settling fits. */
+/* Settling a positive acceleration right away, with the smallest jerk of the stretches it
+ * crosses: where it ends (*x, a position) and the speed it ends at; the first target at or after
+ * *x in *m.  -1 when a target crossed on the way is slower than that speed (loose: accepting the
+ * current state tolerates rounding). */
+static double settle_now(const tp_window_t *w, int k, double s, const tp_state1_t *st, double loose,
+                         double *x, int *m)
+{
+    tp_lim1_t lim = w->t[k].lim;
+    double v_end = st->v, end = s;
+    int n = k;
+    for (int it = 0; it < TP_MOMENTUM_TARGETS; it++) {
+        v_end = st->v + st->a * st->a / (2.0 * lim.jerk);
+        end = s + settle_dist(st, &lim);
+        n = k;
+        int grew = 0;
+        while (n < w->n && w->t[n].s < end) {
+            if (v_end > w->t[n].v * (1.0 + 1e-10 + loose * 1e-8) + 1e-12)
+                return -1.0;
+            n++;
+            if (n < w->n && w->t[n].lim.jerk > 0.0 && w->t[n].lim.jerk < lim.jerk) {
+                lim.jerk = w->t[n].lim.jerk;
+                grew = 1;
+            }
+        }
+        if (!grew)
+            break;
+    }
+    *x = end;
+    *m = n;
+    return v_end;
+}
+
+/* A state still accelerating towards a faster target k may reach it before the acceleration has
+ * settled and carry it on; the backward pass only promised the later targets from target k at rest
+ * acceleration.  Fine when braking is needed anyway (the brake ends at rest acceleration on target
+ * k), when the acceleration settles before target k, or when, settled right away, the state is
+ * within the backward pass's speed curve of the target after the settling. */
 static int momentum_ok(const tp_window_t *w, int k, double s, const tp_state1_t *st, double loose)
 {
-    if (st->a <= 0.0 || w->t[k].lim.jerk <= 0.0)
+    const tp_target_t *tk = &w->t[k];
+    if (st->a <= 0.0 || tk->lim.jerk <= 0.0)
         return 1;
-    double j = w->t[k].lim.jerk;
-    for (int m = k; m + 1 < w->n && m < k + TP_CHECK_TARGETS; m++) {
-        const tp_target_t *n = &w->t[m + 1];
-        if (n->lim.jerk > 0.0)
-            j = fmin(j, n->lim.jerk);
-        double v_over = st->v + st->a * st->a / (2.0 * j);
-        if (v_over <= n->v * (1.0 + 1e-10 + loose * 1e-8) + 1e-12)
-            continue;
-        /* settle in the stretch before target k, where the acceleration is now */
-        return settle_dist(st, &w->t[k].lim) <= w->t[k].s - s + loose * slack(w->t[k].s);
-    }
-    return 1;
+    if (st->v + st->a * st->a / (2.0 * tk->lim.jerk) > tk->v)
+        return 1;
+    if (settle_dist(st, &tk->lim) <= tk->s - s + loose * slack(tk->s))
+        return 1;
+    double x;
+    int m;
+    double v_end = settle_now(w, k, s, st, loose, &x, &m);
+    if (v_end < 0.0)
+        return 0;
+    if (m >= w->n)
+        return 1;
+    const tp_target_t *tm = &w->t[m];
+    return v_end <= tp_chain_vmax(tm->v, tm->s - x, &tm->lim) * (1.0 + loose * 1e-9);
 }
 
 /* Can the state st (st.s into the sub-step from s_now) still meet the targets?  The nearest target
@@ -57,19 +90,24 @@ static int momentum_ok(const tp_window_t *w, int k, double s, const tp_state1_t 
 static int safe_at(const tp_window_t *w, int ti, double s_now, const tp_state1_t *st, double loose)
 {
     double s = s_now + st->s;
+    tp_state1_t cur = *st;
     for (int k = ti; k < w->n && k < ti + TP_CHECK_TARGETS; k++) {
         const tp_target_t *t = &w->t[k];
         double rem = t->s - s, sl = slack(t->s);
         if (rem < -sl)
             return 0;
         /* accepting the current state tolerates rounding of the speed the profile rides at */
-        double need = tp_brake_dist(st->v, st->a, t->v * (1.0 + loose * 1e-9), &t->lim);
+        double need = tp_brake_dist(cur.v, cur.a, t->v * (1.0 + loose * 1e-9), &t->lim);
         if (rem <= 1e-6 + 1e-9 * fabs(t->s)) {
             if (need > rem + sl)
                 return 0;
-            continue;                   /* on this target: the next one counts from here */
+            /* on this target: the next one counts from it, at no more than its speed (what is
+             * left before it is braked with its own limits) */
+            s = fmax(s, t->s);
+            cur.v = fmin(cur.v, t->v);
+            continue;
         }
-        return need <= rem + loose * sl && momentum_ok(w, k, s, st, loose);
+        return need <= rem + loose * sl && momentum_ok(w, k, s, &cur, loose);
     }
     return 1;
 }
@@ -147,7 +185,10 @@ static void go_profile(tp_prof_t *go, double v, double a, const tp_stretch_t *st
         tp_lim1_t own = {st->lim.acc, st->jerk_own};
         tp_prof_t settle;
         tp_prof_velocity(&settle, v, a, st->v, &own);
-        /* only when it settles (brings the acceleration towards zero first), not to push harder */
+        /* only to settle (bring the acceleration towards zero first), never to push harder: when
+         * the own profile would push first, just settle with the own jerk and go on next cycle */
+        if (!(settle.n > 0 && settle.ph[0].j * a < 0.0))
+            tp_prof_velocity(&settle, v, a, v + a * fabs(a) / (2.0 * st->jerk_own), &own);
         if (settle.n > 0 && settle.ph[0].j * a < 0.0)
             *go = settle;
     }
@@ -203,19 +244,6 @@ static int substep(tp_planner_t *tp, const tp_window_t *w, int *ti, int *ri, dou
         *t_rem -= ts;
     } else {
         tp->emergencies++;
-#ifdef TP_DEBUG
-        if (getenv("TP_TRACE")) {
-            for (int k = *ti; k < w->n && k < *ti + 3; k++) {
-                const tp_target_t *q = &w->t[k];
-                fprintf(stderr, "  t%d s=%.12g v=%.9g lim %g/%g need=%.9g rem=%.9g mom=%d\n", k, q->s, q->v, q->lim.acc, q->lim.jerk,
-                        tp_brake_dist(tp->ex.v, tp->ex.a, q->v, &q->lim), q->s - tp->ex.s, momentum_ok(w, k, tp->ex.s, &s0, 1.0));
-            }
-        }
-        if (getenv("TP_TRACE"))
-            fprintf(stderr, "emerg: s=%.12g v=%.12g a=%.6g t s=%.12g v=%.12g lim=%g/%g need=%.12g rem=%.12g\n",
-                    tp->ex.s, tp->ex.v, tp->ex.a, t->s, t->v, t->lim.acc, t->lim.jerk,
-                    tp_brake_dist(tp->ex.v, tp->ex.a, t->v, &t->lim), t->s - tp->ex.s);
-#endif
     }
     int reached;
     double vt = fmin(t->v, st->v);    /* braking never speeds up past the stretch's cap */
@@ -252,17 +280,6 @@ void tp_exec_move(tp_planner_t *tp, const tp_window_t *w, double dt)
 {
     double t_rem = dt;
     int ti = first_target(w, tp->ex.s), ri = 0;
-#ifdef TP_DEBUG
-    if (getenv("TP_TRACE")) {
-        fprintf(stderr, "  win: s=%.9f v=%.6f a=%.3f nr=%d", tp->ex.s, tp->ex.v, tp->ex.a, w->nr);
-        for (int k = 0; k < w->nr && k < 3; k++)
-            fprintf(stderr, " (%.6f v%.4f %g/%g)", w->r[k].s, w->r[k].v, w->r[k].lim.acc, w->r[k].lim.jerk);
-        fprintf(stderr, " n=%d", w->n);
-        for (int k = 0; k < w->n && k < 4; k++)
-            fprintf(stderr, " [%.6f v%.4f %g/%g%s]", w->t[k].s, w->t[k].v, w->t[k].lim.acc, w->t[k].lim.jerk, w->t[k].stop ? " S" : "");
-        fprintf(stderr, "\n");
-    }
-#endif
     for (int step = 0; step < TP_SUBSTEPS && t_rem > 0.0 && ti < w->n; step++)
         if (substep(tp, w, &ti, &ri, &t_rem))
             break;

@@ -292,18 +292,21 @@ static void arc_bounds(const tp_geo_t *g, tp_bounds_t *b)
     b->d3[TP_PATH_AX] = w3;
 }
 
-/* de Casteljau restriction of a degree-n polygon to [u0, u1]. */
-static void bez_restrict(const tp_vec_t *c, int n, double u0, double u1, tp_vec_t *out)
+/* de Casteljau restriction of a degree-n polygon to [u0, u1], on the nax axes listed in ax (the
+ * other components of out are zero). */
+static void bez_restrict(const tp_vec_t *c, int n, double u0, double u1, const int *ax, int nax,
+                         tp_vec_t *out)
 {
     tp_vec_t tmp[6];
+    memset(out, 0, (size_t)(n + 1) * sizeof(*out));
     /* split at u1, keep the left part; then split that at u0/u1, keep the right part */
     for (int k = 0; k <= n; k++)
         tmp[k] = c[k];
     for (int r = 1; r <= n; r++) {
         out[r - 1] = tmp[0];
         for (int k = 0; k <= n - r; k++)
-            for (int i = 0; i < TP_NAX; i++)
-                tmp[k].x[i] += u1 * (tmp[k + 1].x[i] - tmp[k].x[i]);
+            for (int q = 0; q < nax; q++)
+                tmp[k].x[ax[q]] += u1 * (tmp[k + 1].x[ax[q]] - tmp[k].x[ax[q]]);
     }
     out[n] = tmp[0];
     double t = u1 > 0.0 ? u0 / u1 : 0.0;
@@ -312,8 +315,8 @@ static void bez_restrict(const tp_vec_t *c, int n, double u0, double u1, tp_vec_
     for (int r = 1; r <= n; r++) {
         out[n - r + 1] = tmp[n - r + 1];
         for (int k = 0; k <= n - r; k++)
-            for (int i = 0; i < TP_NAX; i++)
-                tmp[k].x[i] += t * (tmp[k + 1].x[i] - tmp[k].x[i]);
+            for (int q = 0; q < nax; q++)
+                tmp[k].x[ax[q]] += t * (tmp[k + 1].x[ax[q]] - tmp[k].x[ax[q]]);
     }
     out[0] = tmp[0];
 }
@@ -331,19 +334,28 @@ static void poly_max(const tp_vec_t *c, int n, double scale, tp_metric_t m, doub
     }
 }
 
-/* Quintic bounds over [s0, s1] from the restricted derivative polygons (convex hull). */
+/* Quintic bounds over [s0, s1] from the restricted derivative polygons (convex hull); axes that
+ * do not move are skipped. */
 static void quintic_bounds(const tp_geo_t *g, double s0, double s1, tp_bounds_t *b)
 {
     tp_vec_t d1[5], d2[4], d3[3], r[6];
     double u0 = s0 / g->len, u1 = s1 / g->len, L = g->len;
+    int ax[TP_NAX], nax = 0;
+    for (int i = 0; i < TP_NAX; i++) {
+        int moves = 0;
+        for (int k = 1; k <= 5 && !moves; k++)
+            moves = g->u.q.b[k].x[i] != g->u.q.b[0].x[i];
+        if (moves)
+            ax[nax++] = i;
+    }
     bez_diff(g->u.q.b, 5, d1);
     bez_diff(d1, 4, d2);
     bez_diff(d2, 3, d3);
-    bez_restrict(d1, 4, u0, u1, r);
+    bez_restrict(d1, 4, u0, u1, ax, nax, r);
     poly_max(r, 4, 1.0 / L, g->metric, b->d1);
-    bez_restrict(d2, 3, u0, u1, r);
+    bez_restrict(d2, 3, u0, u1, ax, nax, r);
     poly_max(r, 3, 1.0 / (L * L), g->metric, b->d2);
-    bez_restrict(d3, 2, u0, u1, r);
+    bez_restrict(d3, 2, u0, u1, ax, nax, r);
     poly_max(r, 2, 1.0 / (L * L * L), g->metric, b->d3);
 }
 

@@ -30,6 +30,14 @@ typedef enum tp_sync {
 #define TP_REG_SYNC_VEL 0x04u
 #define TP_REG_TAP 0x08u        /* a rigid tap: driven by its own state machine */
 
+/* What a blend would like: the cut for a speed v is min(cap, 1.5 need_cut(corner, v, acc, jerk)). */
+typedef struct tp_want {
+    double theta, kink;         /* the corner */
+    double acc, jerk;           /* limits the cut is sized for (jerk 0: trapezoid) */
+    double cap;                 /* most the tolerance allows (INFINITY: none) */
+    double v_need;              /* speed wanted through the corner */
+} tp_want_t;
+
 /* One queued move and its junction bookkeeping. */
 typedef struct tp_seg {
     tp_segment_t in;            /* as added */
@@ -44,6 +52,7 @@ typedef struct tp_seg {
     tp_term_cond_t term;        /* term condition in force when it was added */
     double tol;                 /* G64 P tolerance in force when it was added */
     double want_in, want_out;   /* cut the blends at its ends would like */
+    tp_want_t wf_in, wf_out;    /* how those wants depend on the speed */
     double cut_in, cut_out;     /* length taken from its start / end by blends */
     int tiled;                  /* the two blends meet: nothing straight in between */
     int k_in_set, k_out_set;    /* curvature given at the cut points (tiling) */
@@ -73,6 +82,7 @@ typedef struct tp_region {
     double v_mach;              /* machine speed cap */
     double v_feed, v_rapid;     /* smallest requested feed / traverse speed, INFINITY if none */
     double a, j;                /* usable tangential acceleration and jerk (0 = trapezoid) */
+    double a_rest;              /* usable at rest; below speed w: a_rest - (a_rest - a) w^2 / v_mach^2 */
     double sync_k;              /* velocity sync: units per revolution */
     double v_start;             /* speed cap at the start point (0 = stop, INFINITY = none) */
     uint32_t flags;
@@ -90,6 +100,8 @@ typedef struct tp_target {
 #define TP_WINDOW_MAX 64
 /* Ring entries one add may need: blend halves, a body per move of a unit (64), fallback pieces. */
 #define TP_EMIT_SPACE 72
+/* Pieces (each with its own caps) a blend is emitted in; even. */
+#define TP_BLEND_PIECES 4
 #define TP_CROSS_MAX 16
 
 /* A region the next cycle may enter: where, its speed cap and the limits while in it. */

@@ -14,6 +14,14 @@
 #define TP_BLEND_TRIES 4
 /* Turns above this (rad) are corners: blends on both sides of a move meet without curvature. */
 #define TP_TILE_MAX_TURN 0.35
+/* Blends are sized for the wanted speed with this margin, using these shares of the limits. */
+#define TP_WANT_MARGIN 1.5
+#define TP_WANT_ACC_SHARE 0.35
+#define TP_WANT_JERK_SHARE 0.4
+/* Longest cut on one side of a blend, in cuts of the other side. */
+#define TP_BLEND_SKEW 1.4
+/* Bisection steps for the common speed of two blends sharing a short move. */
+#define TP_SPLIT_ITER 30
 
 /* How move a meets move b. */
 static tp_jct_t classify(tp_planner_t *tp, tp_seg_t *a, tp_seg_t *b, tp_corner_t *c)
@@ -45,12 +53,25 @@ static double blend_tol(const tp_seg_t *a, const tp_seg_t *b)
     return a->tol - fmax(a->unit_dev, b->unit_dev);
 }
 
+/* Cut a blend described by w wants for speed v through its corner. */
+static double want_at(const tp_want_t *w, double v)
+{
+    tp_corner_t c = {NULL, NULL, w->theta, w->kink};
+    return fmin(w->cap, TP_WANT_MARGIN * tp_blend_need_cut(&c, v, w->acc, w->jerk));
+}
+
 /* Symmetric cut a blend between a and b wants: enough for the requested speed, within the tolerance. */
-static double blend_want(tp_planner_t *tp, tp_seg_t *a, tp_seg_t *b, const tp_corner_t *c)
+static double blend_want(tp_planner_t *tp, tp_seg_t *a, tp_seg_t *b, const tp_corner_t *c, tp_want_t *w)
 {
     double v_need = fmin(a->in.vel, b->in.vel) * fmax(1.0, tp->lim.max_feed_override);
     if (a->in.motion_type == TP_MOTION_TRAVERSE || b->in.motion_type == TP_MOTION_TRAVERSE)
         v_need = fmax(v_need, fmin(a->in.ini_maxvel, b->in.ini_maxvel));
+    /* no faster than the machine allows along either move (a feed far above it asks no more) */
+    const double caps[] = {a->in.ini_maxvel, b->in.ini_maxvel, a->lim.vel[TP_PATH_AX],
+                           b->lim.vel[TP_PATH_AX]};
+    for (int k = 0; k < 4; k++)
+        if (caps[k] > 0.0)
+            v_need = fmin(v_need, caps[k]);
     double acc = fmin(a->lim.acc[TP_PATH_AX], b->lim.acc[TP_PATH_AX]);
     double jerk = tp->type == TP_PLANNER_SCURVE ? fmin(a->lim.jerk[TP_PATH_AX], b->lim.jerk[TP_PATH_AX]) : 0.0;
     for (int i = 0; i < TP_NAX; i++) {
@@ -59,11 +80,14 @@ static double blend_want(tp_planner_t *tp, tp_seg_t *a, tp_seg_t *b, const tp_co
         if (jerk > 0.0 && a->lim.jerk[i] > 0.0)
             jerk = fmin(jerk, a->lim.jerk[i]);
     }
-    double d = 1.5 * tp_blend_need_cut(c, v_need, 0.7 * acc, jerk > 0.0 ? 0.4 * jerk : 0.0);
     double tol = blend_tol(a, b);
-    if (tol > 0.0)
-        d = fmin(d, tp_blend_tol_cut(c, TP_TOL_SHARE * tol));
-    return d;
+    w->theta = c->theta;
+    w->kink = c->kink;
+    w->acc = TP_WANT_ACC_SHARE * acc;
+    w->jerk = jerk > 0.0 ? TP_WANT_JERK_SHARE * jerk : 0.0;
+    w->cap = tol > 0.0 ? tp_blend_tol_cut(c, TP_TOL_SHARE * tol) : INFINITY;
+    w->v_need = v_need;
+    return want_at(w, v_need);
 }
 
 /* Decide the junction between b (the last move) and c (just added) and what blend it wants. */
@@ -72,7 +96,28 @@ void tp_jct_plan(tp_planner_t *tp, tp_seg_t *b, tp_seg_t *c)
     tp_corner_t cr;
     b->jct_out = classify(tp, b, c, &cr);
     c->jct_in = b->jct_out;
-    b->want_out = c->want_in = b->jct_out == TP_JCT_BLEND ? blend_want(tp, b, c, &cr) : 0.0;
+    b->want_out = c->want_in = b->jct_out == TP_JCT_BLEND ? blend_want(tp, b, c, &cr, &b->wf_out) : 0.0;
+    c->wf_in = b->wf_out;
+}
+
+/* Share a move too short for both blends' wants: each gets the cut it wants for a common speed
+ * through the two corners (a sharp corner needs more length for the same speed than a gentle one),
+ * the speed found by bisection; what the first corner gets at that speed, the second the rest. */
+static double balanced_cut_in(const tp_seg_t *b, double L)
+{
+    double lo = 0.0, hi = fmax(b->wf_in.v_need, b->wf_out.v_need);
+    if (!(hi > 0.0) || !isfinite(hi))
+        return L * b->want_in / (b->want_in + b->want_out);
+    for (int k = 0; k < TP_SPLIT_ITER; k++) {
+        double mid = 0.5 * (lo + hi);
+        if (want_at(&b->wf_in, mid) + want_at(&b->wf_out, mid) <= L)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    double din = want_at(&b->wf_in, lo), dout = want_at(&b->wf_out, lo);
+    double spare = L - din - dout;      /* what neither needs at that speed: shared as the wants */
+    return din + spare * b->want_in / (b->want_in + b->want_out);
 }
 
 /* Cut lengths of b from the blends at both its ends; tiled when they consume it all. */
@@ -82,7 +127,7 @@ static void split(tp_seg_t *b)
     double dout = b->jct_out == TP_JCT_BLEND ? b->want_out : 0.0;
     double L = b->geo.len;
     if (din + dout >= L) {
-        b->cut_in = L * din / (din + dout);
+        b->cut_in = din > 0.0 && dout > 0.0 ? balanced_cut_in(b, L) : L * din / (din + dout);
         b->cut_out = L - b->cut_in;
         b->tiled = din > 0.0 && dout > 0.0;
     } else {
@@ -143,6 +188,11 @@ static int build_blend(tp_planner_t *tp, tp_seg_t *a, tp_seg_t *b, int a_free, d
     spec.kb_set = b->k_in_set;
     spec.kb = b->k_in;
     (void)tp;
+    /* a lopsided blend turns mostly near its short side and is slow over all its length */
+    if (a_free && !spec.ka_set && spec.da > TP_BLEND_SKEW * spec.db)
+        spec.da = TP_BLEND_SKEW * spec.db;
+    if (!spec.kb_set && spec.db > TP_BLEND_SKEW * spec.da)
+        spec.db = TP_BLEND_SKEW * spec.da;
     for (int k = 0; k < TP_BLEND_TRIES; k++) {
         if (tp_blend_build(&a->blend, &c, &spec) < 0)
             return -1;

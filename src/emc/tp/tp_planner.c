@@ -8,7 +8,7 @@
 /* Largest queue a planner accepts (moves). */
 #define TP_QUEUE_MAX 1000000
 /* Ring sizes per queued move: elements and regions per move, synced analog outputs per move. */
-#define TP_ELEMS_PER_SEG 6
+#define TP_ELEMS_PER_SEG (4 + TP_BLEND_PIECES)
 #define TP_AOUTS_PER_SEG 4
 
 /* Touch every page of a block so that the servo cycle never takes a page fault on it. */

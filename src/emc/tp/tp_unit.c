@@ -6,6 +6,8 @@
 #define TP_UNIT_MAX 64
 /* Share of the tolerance the merged line may stray from the moves' end points. */
 #define TP_UNIT_TOL_SHARE 0.25
+/* Without G64 P, runs merge only where every vertex turns less than this (rad). */
+#define TP_UNIT_FREE_TURN 0.35
 
 /* Head (first move) of the unit a move belongs to. */
 tp_seg_t *tp_unit_head(tp_planner_t *tp, const tp_seg_t *s)
@@ -13,7 +15,7 @@ tp_seg_t *tp_unit_head(tp_planner_t *tp, const tp_seg_t *s)
     return tp_seg_at(tp, s->unit);
 }
 
-/* Moves that may share a unit: plain feed lines with the same settings and a tolerance. */
+/* Moves that may share a unit: plain blended feed lines with the same settings. */
 static int same_kind(const tp_seg_t *h, const tp_seg_t *s)
 {
     const tp_segment_t *a = &h->in, *b = &s->in;
@@ -27,7 +29,22 @@ static int same_kind(const tp_seg_t *h, const tp_seg_t *s)
     if (b->atspeed || b->indexer_jnum >= 0 || a->indexer_jnum >= 0)
         return 0;
     return h->sync == TP_SYNC_NONE && s->sync == TP_SYNC_NONE && h->term == TP_TERM_COND_BLEND &&
-           s->term == TP_TERM_COND_BLEND && h->tol > 0.0 && s->tol == h->tol;
+           s->term == TP_TERM_COND_BLEND && s->tol == h->tol;
+}
+
+/* How far the merged line may pass from the end point of member k (next: the point after it).
+ * With G64 P a share of P; without P the geometry bounds it, as for blends: a share of the
+ * shorter neighbouring move, and only along gently turning runs (sampled curves, not corners). */
+static double vertex_allowance(const tp_seg_t *h, const tp_vec_t *prev, const tp_vec_t *at,
+                               const tp_vec_t *next)
+{
+    if (h->tol > 0.0)
+        return TP_UNIT_TOL_SHARE * h->tol;
+    tp_vec_t a = tp_vec_sub(at, prev), b = tp_vec_sub(next, at);
+    double la = sqrt(tp_vec_dot(&a, &a)), lb = sqrt(tp_vec_dot(&b, &b));
+    if (!(la > 0.0) || !(lb > 0.0) || tp_vec_dot(&a, &b) < cos(TP_UNIT_FREE_TURN) * la * lb)
+        return -1.0;
+    return TP_UNIT_TOL_SHARE * fmin(la, lb);
 }
 
 /* Distance from point p to the line through a with unit direction d (nine axes), and the projection. */
@@ -45,17 +62,20 @@ int tp_unit_can_absorb(tp_planner_t *tp, tp_seg_t *h, const tp_seg_t *s)
     if (!same_kind(h, s) || h->unit_last - h->serial + 1 >= TP_UNIT_MAX)
         return 0;
     const tp_vec_t *a = &h->geo.u.line.start, *e = &s->geo.u.line.end;
-    tp_vec_t d = tp_vec_sub(e, a);
-    double len = sqrt(tp_vec_dot(&d, &d)), limit = TP_UNIT_TOL_SHARE * h->tol, prev = 0.0;
+    tp_vec_t d = tp_vec_sub(e, a), from = *a;
+    double len = sqrt(tp_vec_dot(&d, &d)), prev = 0.0;
     if (!(len > 0.0))
         return 0;
     d = tp_vec_scale(&d, 1.0 / len);
     for (uint64_t k = h->serial; k <= h->unit_last; k++) {
         double t;
         tp_vec_t end_k = tp_vec_from_pose(&tp_seg_at(tp, k)->in.end);
+        tp_vec_t next = k < h->unit_last ? tp_vec_from_pose(&tp_seg_at(tp, k + 1)->in.end) : *e;
+        double limit = vertex_allowance(h, &from, &end_k, &next);
         if (line_dist(&end_k, a, &d, &t) > limit || t <= prev || t >= len)
             return 0;
         prev = t;
+        from = end_k;
     }
     return 1;
 }

@@ -4,6 +4,9 @@
 
 /* The window reaches this many stopping distances ahead. */
 #define TP_WINDOW_REACH 2.0
+/* A valley where the limits drop by more than this factor stays a target (trapezoid, S-curve). */
+#define TP_LIM_STRONGER 1.01
+#define TP_LIM_STRONGER_JERK 2.0
 
 /* Speed a region allows now: machine cap, requested speeds times the overrides, spindle sync. */
 double tp_region_cap(const tp_planner_t *tp, const tp_region_t *r, double feed_scale,
@@ -48,12 +51,16 @@ typedef struct valley {
     int stop;
 } valley_t;
 
-/* The stretch before a valley allows clearly more than the span after it. */
+/* The stretch before a valley allows clearly more than the span after it.  Without jerk limits
+ * every drop counts: the accelerations of curved regions grow as the speed bound ahead falls, and
+ * a target dropped in one cycle and kept in the next would leave a state planned on it unsafe. */
 static int lim_stronger(const tp_lim1_t *before, const tp_lim1_t *span)
 {
-    if (before->acc > 2.0 * span->acc)
+    if (!(span->jerk > 0.0))
+        return before->acc > TP_LIM_STRONGER * span->acc;
+    if (before->acc > TP_LIM_STRONGER_JERK * span->acc)
         return 1;
-    return span->jerk > 0.0 && before->jerk > 2.0 * span->jerk;
+    return before->jerk > TP_LIM_STRONGER_JERK * span->jerk;
 }
 
 /* Backward pass: keep the valleys that bind, lowered so that each can reach the next at rest
@@ -91,22 +98,34 @@ static void reduce(tp_window_t *w, const valley_t *vl, int n, tp_lim1_t first_li
         w->t[k] = rev[m - 1 - k];
 }
 
-/* Limits of a region as a pair. */
-static tp_lim1_t reg_lim(const tp_region_t *r)
+/* Limits of a region as a pair, for speeds up to v_hi: a curved region leaves more acceleration
+ * for speed changes the slower it is passed. */
+static tp_lim1_t reg_lim(const tp_region_t *r, double v_hi)
 {
     tp_lim1_t l = {r->a, r->j};
+    if (r->a_rest > r->a && v_hi < r->v_mach) {
+        double f = v_hi / r->v_mach;
+        l.acc = r->a + (r->a_rest - r->a) * (1.0 - f * f);
+    }
     return l;
 }
 
-/* Note a region the cycle may enter; acc is the smallest acceleration cap ahead of it. */
-static void add_stretch(tp_window_t *w, double s0, double cap, const tp_region_t *r)
+/* Fastest the executor can ever be at the far end of a region it enters at most at speed
+ * sqrt(vf2) after dist of it: no region lets it accelerate more than its a_rest.  The bound only
+ * falls from cycle to cycle, so the limits reg_lim gives only grow: plans stay valid. */
+static double reach_speed(const tp_region_t *r, double vf2, double dist)
+{
+    return fmin(r->v_mach, sqrt(vf2 + 2.0 * fmax(r->a_rest, r->a) * fmax(dist, 0.0)));
+}
+
+/* Note a region the cycle may enter, with its limits for speeds up to v_hi. */
+static void add_stretch(tp_window_t *w, double s0, double cap, const tp_region_t *r, double v_hi)
 {
     if (w->nr >= TP_CROSS_MAX)
         return;
     w->r[w->nr].s = s0;
     w->r[w->nr].v = cap;
-    w->r[w->nr].lim.acc = r->a;
-    w->r[w->nr].lim.jerk = r->j;
+    w->r[w->nr].lim = reg_lim(r, v_hi);
     w->r[w->nr].jerk_own = r->j;
     w->nr++;
 }
@@ -176,13 +195,19 @@ void tp_window_build(tp_planner_t *tp, tp_window_t *w, double fs, double rs, dou
     int n = 0;
     double s = dir > 0 ? tp->ex.s : -tp->ex.s, T = tp->lim.cycle_time;
     const tp_region_t *cur = tp_reg_at(tp, tp->ex.reg);
-    tp_lim1_t lim_cur = reg_lim(cur);
+    double cur_end = dir > 0 ? cur->s0 + cur->len : -cur->s0;
+    double v_hi = reach_speed(cur, tp->ex.v * tp->ex.v, cur_end - s);
+    tp_lim1_t lim_cur = reg_lim(cur, v_hi);
     double cap_cur = tp_region_cap(tp, cur, fs, rs, spindle_rps);
     w->nr = 0;
-    add_stretch(w, s, cap_cur, cur);
+    add_stretch(w, s, cap_cur, cur, v_hi);
     double v = fmax(tp->ex.v, fmin(cap_cur, 1e9));
     double travel = (v + lim_cur.acc * T) * T * 1.5 + 1e-12;
     double ramp = lim_cur.jerk > 0.0 ? v * (fabs(tp->ex.a) + lim_cur.acc) / lim_cur.jerk * 1.5 : 0.0;
+    /* the most positive acceleration the cycle can end with, and how far settling it takes per
+     * unit of the jerk it settles with */
+    double a_pos = fmax(tp->ex.a, 0.0) + lim_cur.jerk * T;
+    double settle_j = (v + a_pos * T) * a_pos * 1.5;
     double reach = TP_WINDOW_REACH * tp_stop_dist(v, fabs(tp->ex.a), &lim_cur) + 4.0 * travel;
     /* the window only grows: a pseudo stop that moved closer could make a safe state unsafe */
     if (dir > 0 && tp->ex.window_end - s > reach)
@@ -202,17 +227,22 @@ void tp_window_build(tp_planner_t *tp, tp_window_t *w, double fs, double rs, dou
         double rcap = tp_region_cap(tp, r, fs, rs, spindle_rps), cap = m.stop ? 0.0 : rcap;
         double limit = cap < v_before ? cap : INFINITY;
         v_before = fmax(v_before, rcap);
+        v_hi = reach_speed(r, v_hi * v_hi, r->len);
+        tp_lim1_t lim_r = reg_lim(r, v_hi);
         if (d < travel)
-            add_stretch(w, m.pos, rcap, r);
-        if (d < travel + ramp)
-            anticipate(w, m.pos, r->a, r->j);
+            add_stretch(w, m.pos, rcap, r, v_hi);
+        /* a region of smaller jerk is anticipated from as far as settling an acceleration under way
+         * takes with its jerk */
+        double settle = lim_r.jerk > 0.0 && lim_r.jerk < lim_cur.jerk ? settle_j / lim_r.jerk : 0.0;
+        if (d < travel + fmax(ramp, settle))
+            anticipate(w, m.pos, lim_r.acc, lim_r.jerk);
         vl[n].s = m.pos;
         vl[n].v = limit;
         vl[n].cap = cap;
         vl[n].lim = before;
         vl[n].stop = cap <= 0.0;
         n++;
-        before = reg_lim(r);
+        before = lim_r;
         if (d > reach)
             break;
     }

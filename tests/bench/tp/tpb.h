@@ -10,6 +10,7 @@
 /* One programmed move in mm (what the interpreter and canon would produce). */
 typedef struct tpb_move {
     int arc;                    /* 0 line, 1 arc */
+    int turn;                   /* arc: extra full turns */
     double end[3];
     double center[3];
     double normal[3];           /* arc: unit normal, counter-clockwise about it */
@@ -56,14 +57,16 @@ int tpb_make(tpb_program_t *p, const char *name);
 void tpb_free(tpb_program_t *p);
 extern const char *const tpb_names[];
 int tpb_make_long(tpb_program_t *p, int segments);
+/* tpb_canon.c */
+int tpb_load_canon(tpb_program_t *p, const char *path);
 /* tpb_metrics.c */
+void tpb_naive_merge(const tpb_program_t *p, tpb_program_t *out);
 void tpb_measure(const tpb_program_t *p, const tpb_machine_t *mc, const tpb_trace_t *tr, tpb_result_t *r);
 /* tpb_run.c */
 int tpb_run(const tpb_program_t *p, const tpb_machine_t *mc, int queue, tpb_trace_t *tr,
-            double *cpu_max, double *cpu_hist, int hist_bins, long *cycles_out);
+            double *cpu_us, long cpu_cap, long *cycles_out);
 int tpb_run_split(const tpb_program_t *p, const tpb_machine_t *mc, int queue, tpb_trace_t *tr,
-                  double *cpu_max, double *cpu_hist, int hist_bins, long *cycles_out, double *add_cpu,
-                  double *cycle_cpu);
+                  double *cpu_us, long cpu_cap, long *cycles_out, double *add_cpu, double *cycle_cpu);
 void tpb_segment(const tpb_program_t *p, const tpb_machine_t *mc, int k, const double *from,
                  tp_segment_t *s);
 

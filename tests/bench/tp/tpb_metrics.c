@@ -57,6 +57,7 @@ static void arc_pieces(pieces_t *ps, const double *s, const tpb_move_t *m, int m
     double sweep = dir > 0 ? fmod(a1 - a0 + 4 * M_PI, 2 * M_PI) : fmod(a0 - a1 + 4 * M_PI, 2 * M_PI);
     if (sweep < 1e-9)
         sweep = 2 * M_PI;
+    sweep += 2 * M_PI * m->turn;
     double r = fmax(fmax(r0, r1), 1e-9), step = r > 1e-4 ? 2 * acos(1 - 1e-4 / r) : M_PI / 4;
     int n = (int)ceil(sweep / fmin(step, M_PI / 4));
     n = n < 2 ? 2 : n > 20000 ? 20000 : n;
@@ -111,7 +112,7 @@ static double seg_dist(const double *x, const double *a, const double *b)
 }
 
 /* Model G64 Q (naive CAM): chains of G1 points within Q of their chord become one line. */
-static void naive_merge(const tpb_program_t *p, tpb_program_t *out)
+void tpb_naive_merge(const tpb_program_t *p, tpb_program_t *out)
 {
     memset(out, 0, sizeof(*out));
     out->m = malloc((size_t)(p->n + 1) * sizeof(*p->m));
@@ -187,7 +188,7 @@ static double pass_bound(const tpb_program_t *p0, const tpb_machine_t *mc)
 {
     tpb_program_t p;
     pieces_t ps;
-    naive_merge(p0, &p);
+    tpb_naive_merge(p0, &p);
     build_pieces(&p, &ps);
     int n = ps.n;
     double *L = calloc(n, sizeof(double)), *vc = calloc(n, sizeof(double)), *ac = calloc(n, sizeof(double));

@@ -163,6 +163,22 @@ static void small_arcs(tpb_program_t *p)
     }
 }
 
+/* The picture in docs/planner.md: a five-pointed star (sharp corners), a short line out to a circle
+ * of 0.1 mm chords around it (a 90 degree corner); G64 P0.05, F24000. */
+static void demo(tpb_program_t *p)
+{
+    double R = 20.0, r = 8.0, Rc = 22.5;
+    for (int k = 0; k <= 10; k++) {
+        double a = M_PI / 2 + k * M_PI / 5, rr = k % 2 ? r : R;
+        line_to(p, rr * cos(a), rr * sin(a), 0.0, 24000, 0.05, 0.0);
+    }
+    line_to(p, 0.0, Rc, 0.0, 24000, 0.05, 0.0);
+    double step = 2.0 * asin(0.05 / Rc);
+    int chords = (int)(2.0 * M_PI / step);
+    for (int k = 1; k <= chords; k++)
+        line_to(p, Rc * sin(k * step), Rc * cos(k * step), 0.0, 24000, 0.05, 0.0);
+}
+
 /* Build a named program; 0, or -1 for an unknown name. */
 int tpb_make(tpb_program_t *p, const char *name)
 {
@@ -180,6 +196,8 @@ int tpb_make(tpb_program_t *p, const char *name)
         zigzag(p);
     else if (!strcmp(name, tpb_names[5]))
         small_arcs(p);
+    else if (!strcmp(name, "demo"))
+        demo(p);
     else
         return -1;
     return 0;

@@ -46,12 +46,17 @@ void tpb_segment(const tpb_program_t *p, const tpb_machine_t *mc, int k, const d
         s->normal.x = m->normal[0];
         s->normal.y = m->normal[1];
         s->normal.z = m->normal[2];
+        s->turn = m->turn;
     } else {
         double u[3] = {0, 0, 0};
         for (int i = 0; i < 3 && len > 0.0; i++)
             u[i] = d[i] / len;
         s->ini_maxvel = along(u, mc->vel, mc->vtraj);
         s->acc = along(u, mc->acc, 1e9);
+    }
+    if (m->feed >= 1e8) {       /* a rapid: the machine velocity along the move */
+        s->motion_type = TP_MOTION_TRAVERSE;
+        s->vel = s->ini_maxvel;
     }
     s->jerk = mc->jerk;
     s->enables = TP_ENABLE_FS | TP_ENABLE_FH;
@@ -106,17 +111,17 @@ static double thread_cpu(void)
     return ts.tv_sec + 1e-9 * ts.tv_nsec;
 }
 
-/* Run the program to completion; record positions (tr may be NULL) and per-cycle CPU time. */
+/* Run the program to completion; record positions (tr may be NULL) and the CPU microseconds of
+ * each of the first cpu_cap cycles (adds and run_cycle; cpu_us may be NULL). */
 int tpb_run(const tpb_program_t *p, const tpb_machine_t *mc, int queue, tpb_trace_t *tr,
-            double *cpu_max, double *cpu_hist, int hist_bins, long *cycles_out)
+            double *cpu_us, long cpu_cap, long *cycles_out)
 {
-    return tpb_run_split(p, mc, queue, tr, cpu_max, cpu_hist, hist_bins, cycles_out, NULL, NULL);
+    return tpb_run_split(p, mc, queue, tr, cpu_us, cpu_cap, cycles_out, NULL, NULL);
 }
 
 /* As tpb_run, also adding up the CPU seconds spent adding moves and running cycles. */
 int tpb_run_split(const tpb_program_t *p, const tpb_machine_t *mc, int queue, tpb_trace_t *tr,
-                  double *cpu_max, double *cpu_hist, int hist_bins, long *cycles_out, double *add_cpu,
-                  double *cycle_cpu)
+                  double *cpu_us, long cpu_cap, long *cycles_out, double *add_cpu, double *cycle_cpu)
 {
     tp_planner_t *tp = bench_planner(mc, queue);
     int next = 0;
@@ -138,18 +143,14 @@ int tpb_run_split(const tpb_program_t *p, const tpb_machine_t *mc, int queue, tp
     fill(tp, p, mc, &next, at, 1 << 30); /* held start: the queue is full before motion */
     long cycles = 0;
     for (;;) {
-        double t0 = cpu_hist ? thread_cpu() : 0.0;
+        double t0 = cpu_us ? thread_cpu() : 0.0;
         fill(tp, p, mc, &next, at, TPB_ADDS_PER_CYCLE);
         double t1 = add_cpu ? thread_cpu() : 0.0;
         tp_planner_run_cycle(tp, &in, &out);
         if (add_cpu)
             *cycle_cpu += thread_cpu() - t1 - clock_cost;
-        if (cpu_hist) {
-            double us = (thread_cpu() - t0) * 1e6;
-            int bin = (int)(us * 10.0);
-            cpu_hist[bin < hist_bins ? bin : hist_bins - 1] += 1.0;
-            *cpu_max = fmax(*cpu_max, us);
-        }
+        if (cpu_us && cycles < cpu_cap)
+            cpu_us[cycles] = (thread_cpu() - t0) * 1e6;
         cycles++;
         if (tr) {
             if (tr->n == tr->cap) {

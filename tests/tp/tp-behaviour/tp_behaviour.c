@@ -127,7 +127,7 @@ static void corner_modes(void)
         for (int k = 0; k < 20000; k++) {
             tp_planner_run_cycle(tp, &in, &out);
             double dx = out.pos.tran.x - 2.0, dy = out.pos.tran.y;
-            if (fabs(dx) < 0.05 && fabs(dy) < 0.05)
+            if (fabs(dx) < 0.6 && fabs(dy) < 0.6)
                 v_corner = fmin(v_corner, speed(&prev, &out));
             dev = fmax(dev, fmin(fabs(dy) + (out.pos.tran.x > 2.0 ? 1e9 : 0.0), fabs(dx)));
             prev = out;
@@ -375,8 +375,14 @@ static void rigid_tap(void)
     tp_planner_t *tp = machine(0.0);
     tp_cycle_in_t in = inputs();
     tp_cycle_out_t out;
+    memset(&out, 0, sizeof(out));
     spindle_sim_t sp = {5.0, 0.0, 5.0};
-    tp_segment_t a = move(0, 0, -2, 4.0, 1);
+    /* a move first, finished before the tap is queued (the tap starts from where it stopped) */
+    tp_segment_t pre = move(1, 0, 0, 4.0, 1);
+    tp_planner_add(tp, &pre);
+    for (int k = 0; k < 5000 && !out.done; k++)
+        tp_planner_run_cycle(tp, &in, &out);
+    tp_segment_t a = move(1, 0, -2, 4.0, 2);
     a.kind = TP_SEG_RIGID_TAP;
     a.tap_uu_per_rev = 0.25;
     tp_planner_add(tp, &a);
@@ -403,7 +409,8 @@ static void rigid_tap(void)
         if (out.done)
             break;
     }
-    printf("; went past the depth %s; done at Z %.6f\n", deepest < -2.0 ? "yes" : "no", out.pos.tran.z);
+    printf("; went past the depth %s; done at X %.6f Z %.6f\n", deepest < -2.0 ? "yes" : "no",
+           out.pos.tran.x, out.pos.tran.z);
     tp_planner_destroy(tp);
 }
 

@@ -151,7 +151,7 @@ static void caps_line(void)
     }
     l.vel[1] = 2.0;
     tp_caps_t c;
-    tp_caps_compute(&b, &l, 1e9, 0, &c);
+    tp_caps_compute(&b, &l, 1e9, 0, 1.0, &c);
     printf("line (3,4) caps: speed %.4f acceleration %.4f\n", c.v, c.a);
 }
 
