@@ -280,12 +280,12 @@ void Task::restore_origin(int code)
     if (index == 0 || index == s.origin_index) return;
     s.origin_index = index;
     s.params[5220] = index;
-    double k = s.machine_to_program();
     CanonPose p;
     double *f[9] = {&p.x, &p.y, &p.z, &p.a, &p.b, &p.c, &p.u, &p.v, &p.w};
     for (int i = 0; i < 9; i++) {
         bool linear = i < 3 || i > 5;
-        s.origin_offset[i] = s.params[5201 + 20 * index + i] * (linear ? k : 1.0);
+        double stored = s.params[5201 + 20 * index + i];
+        s.origin_offset[i] = linear ? s.user_to_program(stored) : stored;
         *f[i] = s.origin_offset[i];
     }
     s.rotation_xy = s.params[5210 + 20 * index];
