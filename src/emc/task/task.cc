@@ -23,6 +23,8 @@ Task::Task(const MachineConfig &cfg)
     cc.axis_mask = cfg.axis_mask;
     cc.spindles = cfg.spindles;
     cc.limits = machine_axis_limits(cfg);
+    cc.tool_change_axes = cfg.tool_change_axes;
+    for (int i = 0; i < 9; i++) cc.tool_change_position[i] = cfg.tool_change_position[i];
     canon_ = std::make_unique<TaskCanon>(cc, *this, list_);
     emc_set_text(st_.task.ini_filename, cfg.ini_path.c_str());
 }
