@@ -139,14 +139,17 @@ void Task::fill_task_status()
     }
 }
 
-// RCS status: ERROR after a refused or failed command; DONE when nothing is pending.
+// RCS status: ERROR after a refused or failed command; DONE when nothing is pending (no move,
+// jog, homing, tool change, queued MDI or program).
 int Task::rcs_status() const
 {
     if (command_failed_ || exec_error_) return RCS_ERROR;
     bool coord_busy = traj_mode_ == EMC_TRAJ_MODE_COORD && !motion_done();
     bool joint_jog = traj_mode_ == EMC_TRAJ_MODE_FREE && mst_.jogging_active && !mst_.homing_active;
     bool echoed = !mot_ || (int32_t)(mst_.echo.serial - last_serial_) >= 0;
-    bool idle = exec_state_ == EMC_TASK_EXEC_DONE && !coord_busy && !joint_jog && echoed && io_.done() &&
+    // a homing in progress keeps the home command executing (wait_complete() returns homed)
+    bool idle = exec_state_ == EMC_TASK_EXEC_DONE && !coord_busy && !joint_jog && !mst_.homing_active &&
+                echoed && io_.done() &&
                 mdi_queue_.empty() && list_.empty() && !has_pending_ && !wait_synch_ &&
                 interp_state_ == EMC_TASK_INTERP_IDLE;
     return idle ? RCS_DONE : RCS_EXEC;
