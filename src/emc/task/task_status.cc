@@ -155,8 +155,19 @@ int Task::rcs_status() const
     return idle ? RCS_DONE : RCS_EXEC;
 }
 
+// The status echoes a command once motion has taken what it issued (as LinuxCNC, where task waits
+// for motion's acknowledgement): a client that sent M64 and polls after the echo sees the output.
+void Task::update_echo()
+{
+    if (!echo_pending_ || !motion_echoed()) return;
+    echo_pending_ = false;
+    st_.echo_serial_number = st_.task.echo_serial_number = echo_serial_;
+    st_.command_type = st_.task.command_type = echo_type_;
+}
+
 void Task::update_status()
 {
+    update_echo();
     fill_motion_status();
     fill_task_status();
     int rcs = rcs_status();
