@@ -186,7 +186,7 @@ static int check_mode(hm2_board_t *hm2, int port, int chan, hm2_sserial_channel_
     }
     if (n == 0)
         return 0;
-    HM2_ERR(hm2, "sserial_port_%d=: channel %d has a %s, which has no software mode %d (modes: %s)\n",
+    HM2_ERR(hm2, "sserial_port_%d: channel %d has a %s, which has no software mode %d (modes: %s)\n",
             port, chan, ch->card, ch->mode, list);
     return -EINVAL;
 }

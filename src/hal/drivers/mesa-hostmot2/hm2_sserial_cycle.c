@@ -30,7 +30,10 @@ static void stop_on_errors(hm2_board_t *hm2, hm2_sserial_port_t *p, uint32_t fai
     p->state = HM2_SSERIAL_STOPPED_ON_ERRORS;
     p->send_stop = true;
     p->over_limit_times++;
-    hm2_watchdog_bite_now(hm2);
+    if (hm2->watchdog.num_instances) {
+        uint32_t expire_now = 0;   /* the timeout param stays; recovery rewrites the timer */
+        hm2_queue_write(hm2, hm2->watchdog.timer_addr, &expire_now, 4);
+    }
     if (p->stop_reported)
         return;
     p->stop_reported = true;
