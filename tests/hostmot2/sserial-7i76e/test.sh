@@ -46,5 +46,5 @@ wait_until "the stopped remote drops its outputs (watchdog)" sim_is outputs-enab
 halcmd setp $R.nvwatchdogtimeout 100
 wait_until "a global written while stopped reaches the remote" sim_is nvwatchdogtimeout 100 get sserial 0
 halcmd setp $BOARD.sserial.port-0.run 1
-wait_until "run TRUE restarts the port (state 2)" pin_is $BOARD.sserial.port-0.port_state 2
+wait_until "run TRUE restarts the port (state 3)" pin_is $BOARD.sserial.port-0.port_state 3
 wait_until "outputs come back after the restart" sim_is output 0x8009 get sserial 0

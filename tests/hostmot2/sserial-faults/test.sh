@@ -14,6 +14,11 @@ halcmd setp $R.output-01 1
 halcmd start
 wait_until "output-01 reaches the 7I76" sim_is output 0x2 get sserial 0
 wait_until "board GPIO 47 drives low" sim_is 47 0 get io 47
+sim sserial-busy 5 > /dev/null
+wait_until "unfinished do-its are counted" [ "$(halcmd getp $P.fault-count)" -ge 40 ]
+wait_until "the count decays on good cycles" pin_is $P.fault-count 0
+check "the port keeps running (state 3)" pin_is $P.port_state 3
+grep -o "Smart Serial port 0: DoIt not cleared.*" "$RT_LOG"
 sim sserial-unplug 0 > /dev/null
 wait_until "the port stops on errors (state 10)" pin_is $P.port_state 10
 check "the remote's fault pin is TRUE" pin_is $R.fault TRUE
@@ -24,7 +29,8 @@ wait_until "the board's watchdog has bitten" pin_is $BOARD.watchdog.has_bit TRUE
 wait_until "board GPIO 47 is released (safe, pulled up)" sim_is 47 1 get io 47
 sleep 0.2
 echo "reports: $(grep -c 'will be stopped' "$RT_LOG") stop, $(grep -c 'is not answering' "$RT_LOG") channel"
-grep -o "Smart Serial port 0 channel 0 (hm2_7i76e.0.7i76.0.0) is not answering.*" "$RT_LOG"
+grep -o "Smart Serial \(port 0 channel 0 (hm2_7i76e.0.7i76.0.0) is not answering\|Error: port\|Comms Error\).*" "$RT_LOG"
+grep -o "Smart serial card.*" "$RT_LOG"
 halcmd setp $P.run 0
 wait_until "run FALSE is seen" pin_is $P.port_state 10
 sleep 0.1
@@ -36,7 +42,7 @@ halcmd setp $P.run 0
 wait_until "run FALSE is seen" pin_is $P.port_state 10
 sleep 0.1
 halcmd setp $P.run 1
-wait_until "run FALSE -> TRUE restarts the port" pin_is $P.port_state 2
+wait_until "run FALSE -> TRUE restarts the port" pin_is $P.port_state 3
 check "fault-count is reset" pin_is $P.fault-count 0
 wait_until "the remote's fault pin clears" pin_is $R.fault FALSE
 halcmd setp $BOARD.watchdog.has_bit 0

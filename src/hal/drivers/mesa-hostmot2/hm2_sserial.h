@@ -70,7 +70,7 @@ typedef struct {
     uint32_t *cs_read, *iface_read[SSLBP_MAX_INTERFACE_REGS];    /* TRAM */
     uint32_t *iface_write[SSLBP_MAX_INTERFACE_REGS];
     hm2_sserial_remote_hal_t *hal;
-    bool fault_reported;
+    bool error_reported;               /* first failed transfer reported */
 } hm2_sserial_channel_t;
 
 typedef struct {
@@ -80,10 +80,11 @@ typedef struct {
     hal_u32_t fault_inc, fault_dec, fault_lim;
 } hm2_sserial_port_hal_t;
 
+/* port_state values (LinuxCNC shows 0 with run FALSE, 3 in normal operation, 10 after errors). */
 enum {
     HM2_SSERIAL_STOPPED = 0,           /* run FALSE: globals may be written */
     HM2_SSERIAL_STARTING = 1,
-    HM2_SSERIAL_RUNNING = 2,
+    HM2_SSERIAL_RUNNING = 3,
     HM2_SSERIAL_STOPPED_ON_ERRORS = 10,
 };
 

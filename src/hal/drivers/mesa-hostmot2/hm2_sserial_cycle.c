@@ -6,8 +6,23 @@
 
 #define DOIT_WARN_AFTER 4
 
+/* The first failed transfer of a remote, reported once (until the port restarts). */
+static void report_channel_error(hm2_board_t *hm2, hm2_sserial_port_t *p, int c, uint32_t link)
+{
+    hm2_sserial_channel_t *ch = &p->chan[c];
+    if (ch->error_reported)
+        return;
+    ch->error_reported = true;
+    HM2_ERR(hm2, "Smart Serial Error: port %i channel %i. You may see this error if the FPGA card "
+            "read thread is not running. This error message will not repeat.\n", p->index, c);
+    if (link == SSLBP_LINK_CRC)
+        HM2_ERR(hm2, "Smart serial card %s error = (%i) %s\n", ch->name, 0, "CRC error");
+    else
+        HM2_ERR(hm2, "Smart serial card %s error = (%i) %s\n", ch->name, 3, "Timeout");
+}
+
 /* Fault pins and comm-state of the remotes after a transfer (failed = channel mask). */
-static void update_remote_status(hm2_sserial_port_t *p, uint32_t failed, bool unpack)
+static void update_remote_status(hm2_board_t *hm2, hm2_sserial_port_t *p, uint32_t failed, bool unpack)
 {
     for (int c = 0; c < p->num_channels; c++) {
         hm2_sserial_channel_t *ch = &p->chan[c];
@@ -18,6 +33,8 @@ static void update_remote_status(hm2_sserial_port_t *p, uint32_t failed, bool un
         *ch->hal->comm_state = bad ? (SSLBP_CS_LINK(cs) ? SSLBP_CS_LINK(cs) : SSLBP_LINK_TIMEOUT) << 8
                                    : SSLBP_CS_STATUS(cs);
         *ch->hal->fault = bad || SSLBP_CS_STATUS(cs) != 0;
+        if (bad)
+            report_channel_error(hm2, p, c, SSLBP_CS_LINK(cs));
         if (!bad && unpack)
             hm2_sserial_unpack_inputs(ch);
     }
@@ -39,8 +56,7 @@ static void stop_on_errors(hm2_board_t *hm2, hm2_sserial_port_t *p, uint32_t fai
     p->stop_reported = true;
     HM2_ERR(hm2, "Smart Serial Comms Error: There have been more than %i errors in %i thread "
             "executions at least %i times. See other error messages for details.\n",
-            (int)(p->hal->fault_lim / (p->hal->fault_inc ? p->hal->fault_inc : 1)),
-            (int)p->cycles_since_reset, (int)p->over_limit_times);
+            (int)p->hal->fault_dec, (int)p->hal->fault_inc, (int)p->hal->fault_lim);
     HM2_ERR(hm2, "***Smart Serial Port %i will be stopped***\n", p->index);
     for (int c = 0; c < p->num_channels; c++)
         if (failed & (1u << c))
@@ -77,7 +93,7 @@ static void check_doit(hm2_board_t *hm2, hm2_sserial_port_t *p)
         account(hm2, p, true, 0);
         return;
     }
-    update_remote_status(p, failed, true);
+    update_remote_status(hm2, p, failed, true);
     account(hm2, p, failed != 0, failed);
     if (failed)
         p->last_failed = failed;
@@ -88,7 +104,7 @@ static void check_start(hm2_board_t *hm2, hm2_sserial_port_t *p)
 {
     uint32_t failed = *p->data_read & p->active_mask & SSLBP_DATA_FAIL_MASK;
     if (*p->command_read != 0 || failed) {
-        update_remote_status(p, failed ? failed : p->active_mask, false);
+        update_remote_status(hm2, p, failed ? failed : p->active_mask, false);
         p->state = HM2_SSERIAL_STOPPED_ON_ERRORS;
         if (!p->restart_reported)
             HM2_ERR(hm2, "Smart Serial port %d: restart failed (channels 0x%02X not answering); "
@@ -101,8 +117,10 @@ static void check_start(hm2_board_t *hm2, hm2_sserial_port_t *p)
     p->cycles_since_reset = 0;
     p->stop_reported = false;
     p->restart_reported = false;
+    for (int c = 0; c < p->num_channels; c++)
+        p->chan[c].error_reported = false;
     *p->hal->fault_count = 0;
-    update_remote_status(p, 0, false);
+    update_remote_status(hm2, p, 0, false);
     HM2_PRINT(hm2, "Smart Serial port %d restarted\n", p->index);
 }
 

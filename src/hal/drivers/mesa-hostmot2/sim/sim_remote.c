@@ -26,6 +26,7 @@ static const sim_record_def_t records_7i76[] = {
     {"fieldvoltage", "volt", SSLBP_TYPE_UNSIGNED, SSLBP_DIR_IN, 8, 0, FIELD_VOLTS, MPG_MODE, false, 0},
     {"encoder0", "count", SSLBP_TYPE_ENCODER, SSLBP_DIR_IN, 8, 0, 1, MPG_MODE, false, 0},
     {"encoder1", "count", SSLBP_TYPE_ENCODER, SSLBP_DIR_IN, 8, 0, 1, MPG_MODE, false, 0},
+    {"swrevision", "none", SSLBP_TYPE_UNSIGNED, SSLBP_DIR_IN, 16, 0, 0, 0, true, 14},
     {"nvbaudrate", "none", SSLBP_TYPE_NONVOL_UNSIGNED, SSLBP_DIR_OUT, 8, 0, 11, 0, true, 9},
     {"nvunitnumber", "none", SSLBP_TYPE_NONVOL_UNSIGNED, SSLBP_DIR_OUT, 32, 0, 0, 0, true, 0},
     {"nvwatchdogtimeout", "ms", SSLBP_TYPE_NONVOL_UNSIGNED, SSLBP_DIR_OUT, 16, 0, 65535, 0, true, 50},

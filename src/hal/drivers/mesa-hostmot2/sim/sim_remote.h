@@ -49,6 +49,8 @@ typedef struct {
 /* The card's port: registers and its remotes. */
 typedef struct {
     uint32_t command, data;
+    uint32_t pending;                   /* a do-it the firmware has not finished (reads back) */
+    int busy_doits;                     /* fault injection: do-its left unfinished */
     uint32_t cs_out[SIM_SSERIAL_CHANNELS], cs_in[SIM_SSERIAL_CHANNELS];
     uint32_t iface_out[SIM_SSERIAL_CHANNELS][SSLBP_V0_INTERFACE_REGS];
     uint32_t iface_in[SIM_SSERIAL_CHANNELS][SSLBP_V0_INTERFACE_REGS];

@@ -82,7 +82,8 @@ static bool doit(sim_card_t *c, int chan)
     return true;
 }
 
-/* Run a command written to the command register (done at once: it reads back 0). */
+/* Run a command written to the command register (done at once: it reads back 0, unless a
+   busy fault leaves a do-it unfinished until the next command). */
 static void command(sim_card_t *c, uint32_t cmd)
 {
     sim_sserial_t *s = &c->sserial;
@@ -90,6 +91,12 @@ static void command(sim_card_t *c, uint32_t cmd)
     bool (*per_channel)(sim_card_t *, int) = NULL;
     if ((cmd & SSLBP_CMD_IGNORED) || cmd == 0)
         return;
+    s->pending = 0;
+    if ((cmd & 0xF000u) == SSLBP_CMD_DOIT && s->busy_doits > 0) {
+        s->busy_doits--;
+        s->pending = cmd;
+        return;
+    }
     if ((cmd & 0xF000u) == SSLBP_CMD_READ_LOCAL && (cmd & 0xFFu) == SSLBP_LOCAL_VERSION) {
         s->data = SIM_SSERIAL_VERSION;
         return;
@@ -121,7 +128,7 @@ bool sim_sserial_read(sim_card_t *c, uint16_t addr, uint32_t *v)
     sim_sserial_t *s = &c->sserial;
     bool ok = chan < SIM_SSERIAL_CHANNELS;
     switch (reg) {
-    case SSLBP_REG_COMMAND: *v = 0; break;
+    case SSLBP_REG_COMMAND: *v = chan == 0 ? s->pending : 0; break;
     case SSLBP_REG_DATA: *v = chan == 0 ? s->data : 0; break;
     case SSLBP_REG_CS: *v = ok ? s->cs_in[chan] : 0; break;
     default: *v = ok ? s->iface_in[chan][reg - SSLBP_REG_INTERFACE0] : 0; break;

@@ -59,9 +59,15 @@ static void set_input(sim_remote_t *r, const char *name, const char *value)
     sim_say("ok");
 }
 
-/* get sserial CH | set sserial CH NAME VALUE | sserial-unplug CH | sserial-plug CH. */
+/* get sserial CH | set sserial CH NAME VALUE | sserial-unplug CH | sserial-plug CH |
+   sserial-busy N (the next N do-its stay unfinished). */
 int sim_sserial_command(sim_card_t *c, int argc, char **argv)
 {
+    if (!strcmp(argv[0], "sserial-busy")) {
+        c->sserial.busy_doits = argc > 1 ? atoi(argv[1]) : 1;
+        sim_say("ok");
+        return 0;
+    }
     bool is_get = !strcmp(argv[0], "get"), is_set = !strcmp(argv[0], "set");
     sim_remote_t *r = remote_arg(c, argc > (is_get || is_set ? 2 : 1) ? argv[is_get || is_set ? 2 : 1] : NULL);
     if (!r)
