@@ -25,3 +25,9 @@ halcmd loadrt hm2_eth board_ip=$SIM_IP config="sserial_port_0=02" > /dev/null 2>
 echo "remotes with 02: $(halcmd list pin "$BOARD.7i76.*.output-00")"
 echo "channel 1 mode 2 MPG encoder: $(halcmd list pin "$BOARD.7i76.0.1.encoder0.*")"
 echo "fieldvoltage only in mode 2: $(halcmd list pin "$BOARD.7i76.*.fieldvoltage")"
+halcmd unloadrt hm2_eth
+halcmd unloadrt hostmot2
+halcmd loadrt hostmot2 use_serial_numbers=1 sserial_baudrate=115200 || exit 1
+halcmd loadrt hm2_eth board_ip=$SIM_IP > /dev/null 2>&1 || { echo "use_serial_numbers did not load"; exit 1; }
+echo "use_serial_numbers=1: $(halcmd list pin "hm2_7i76.*.output-00")"
+grep -o "sserial_baudrate=.*" "$RT_LOG"

@@ -406,6 +406,9 @@ int hm2_sserial_parse_md(hm2_board_t *hm2, int md_index)
         s->num_instances = HM2_SSERIAL_PORTS;
     if (s->num_instances == 0)
         return 0;
+    if (sserial_baudrate != -1)
+        HM2_PRINT(hm2, "sserial_baudrate=%d: this driver does not flash remotes; ignored\n",
+                 sserial_baudrate);
     uint32_t version;
     if ((r = port_command(hm2, 0, SSLBP_CMD_READ_LOCAL | SSLBP_LOCAL_VERSION, &version)) < 0)
         return r;
