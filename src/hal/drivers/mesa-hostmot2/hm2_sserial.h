@@ -41,6 +41,7 @@ typedef struct {
     hm2_sserial_rec_hal_t *hal;
     int64_t enc_count;                 /* ENCODER: extended count */
     uint32_t enc_prev_raw, enc_offset;
+    bool enc_seeded;                   /* first reading taken as the starting point */
     uint32_t written_global;           /* globals: value last written to the remote */
 } hm2_sserial_rec_t;
 

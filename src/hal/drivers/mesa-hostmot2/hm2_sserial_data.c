@@ -107,6 +107,10 @@ static void unpack_encoder(hm2_sserial_rec_t *rec, uint32_t raw)
 {
     hm2_sserial_rec_hal_t *h = rec->hal;
     int bits = rec->bits > 32 ? 32 : rec->bits;
+    if (!rec->enc_seeded) {
+        rec->enc_prev_raw = raw;
+        rec->enc_seeded = true;
+    }
     rec->enc_count += sign_extend(raw - rec->enc_prev_raw, bits);
     rec->enc_prev_raw = raw;
     if (*h->reset)
