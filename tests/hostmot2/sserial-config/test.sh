@@ -21,6 +21,9 @@ halcmd loadrt hm2_eth board_ip=$SIM_IP config="sserial_port_0=x0" > /dev/null 2>
 echo "remotes with x0: $(halcmd list pin "$BOARD.7i76.*.output-00")"
 echo "channel 0 GPIO outputs: $(halcmd list pin "$BOARD.gpio.04[4-6].out")"
 halcmd unloadrt hm2_eth
+halcmd loadrt hm2_eth board_ip=$SIM_IP config="sserial_port_0=xx" > /dev/null 2>&1 || { echo "xx did not load"; exit 1; }
+echo "Smart Serial objects with xx: [$(halcmd list pin "$BOARD.sserial.*") $(halcmd list pin "$BOARD.7i76.*")]"
+halcmd unloadrt hm2_eth
 halcmd loadrt hm2_eth board_ip=$SIM_IP config="sserial_port_0=02" > /dev/null 2>&1 || { echo "02 did not load"; exit 1; }
 echo "remotes with 02: $(halcmd list pin "$BOARD.7i76.*.output-00")"
 echo "channel 1 mode 2 MPG encoder: $(halcmd list pin "$BOARD.7i76.0.1.encoder0.*")"

@@ -414,8 +414,13 @@ int hm2_sserial_parse_md(hm2_board_t *hm2, int md_index)
         return r;
     HM2_PRINT(hm2, "Smart Serial Firmware Version %i\n", (int)(version & 0xFF));
     for (int port = 0; port < s->num_instances; port++) {
-        if ((r = setup_port(hm2, md->gtag, port)) < 0 ||
-            (r = hm2_sserial_export_port(hm2, &s->port[port])) < 0 ||
+        if ((r = setup_port(hm2, md->gtag, port)) < 0)
+            return r;
+        if (!s->port[port].active_mask) {
+            HM2_INFO(hm2, "Smart Serial port %d: no remotes in use, no HAL objects\n", port);
+            continue;
+        }
+        if ((r = hm2_sserial_export_port(hm2, &s->port[port])) < 0 ||
             (r = register_tram(hm2, &s->port[port])) < 0)
             return r;
     }
