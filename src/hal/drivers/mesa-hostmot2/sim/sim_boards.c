@@ -27,21 +27,32 @@ static const uint32_t pins_7i92[34] = {
 static const uint32_t pins_7i76e[51] = {
     SG(0), SG(1), SG(2), SG(3), SG(4), G4, GPIO, GPIO, GPIO, G17, ENC(0), PWM(0), G4, SS(0), SS(1), GPIO,
 };
+/* 7I92 with a 7I77 on P1: 3 encoders and the Smart Serial channels 0-1 on P2, 2 stepgens on P1. */
+static const uint32_t pins_7i92_7i77[34] = {
+    ENC(0), ENC(1), ENC(2), SS(0), SS(1), GPIO, GPIO, SG(0), SG(1), G4, G4, G4, GPIO,
+};
 static const uint32_t pins_7i96[51] = {
     SG(0), SG(1), SG(2), SG(3), SG(4), ENC(0), PWM(0), GPIO, G17, G4, G4, G4, GPIO, GPIO, UART(0),
 };
 
 static const sim_board_t boards[] = {
-    {"7I92", "MESA7I92", 2, 17, 4, 2, 1, 0, 100000000, 200000000, 0, pins_7i92},
-    {"7I76E-16", "MESA7I76", 3, 17, 5, 1, 1, 0, 100000000, 200000000, SIM_SSERIAL_CHANNELS, pins_7i76e},
-    {"7I96", "MESA7I96", 3, 17, 5, 1, 1, 1, 100000000, 200000000, 0, pins_7i96},
+    {"7I92", "MESA7I92", 2, 17, 4, 2, 1, 0, 100000000, 200000000, 0, pins_7i92, NULL},
+    {"7I76E-16", "MESA7I76", 3, 17, 5, 1, 1, 0, 100000000, 200000000, SIM_SSERIAL_CHANNELS, pins_7i76e, NULL},
+    {"7I96", "MESA7I96", 3, 17, 5, 1, 1, 1, 100000000, 200000000, 0, pins_7i96, NULL},
+    {"7I92", "MESA7I92", 2, 17, 2, 3, 1, 0, 100000000, 200000000, SIM_SSERIAL_CHANNELS, pins_7i92_7i77,
+     "7i92-7i77"},
 };
 
-/* Board by name, case-insensitive ("7i92", "7i76e", "7i96"). */
+/* Board by name, case-insensitive ("7i92", "7i76e", "7i96", or a variant such as "7i92-7i77"). */
 const sim_board_t *sim_find_board(const char *name)
 {
+    for (size_t i = 0; i < sizeof(boards) / sizeof(boards[0]); i++)
+        if (boards[i].variant && !strcasecmp(boards[i].variant, name))
+            return &boards[i];
     for (size_t i = 0; i < sizeof(boards) / sizeof(boards[0]); i++) {
         size_t n = strlen(name);
+        if (boards[i].variant)
+            continue;
         if (strncasecmp(boards[i].name, name, n) == 0 &&
             (boards[i].name[n] == '\0' || boards[i].name[n] == '-'))
             return &boards[i];
@@ -52,8 +63,12 @@ const sim_board_t *sim_find_board(const char *name)
 /* The names --board accepts. */
 void sim_list_boards(FILE *out)
 {
-    for (size_t i = 0; i < sizeof(boards) / sizeof(boards[0]); i++)
-        fprintf(out, " %.*s", (int)strcspn(boards[i].name, "-"), boards[i].name);
+    for (size_t i = 0; i < sizeof(boards) / sizeof(boards[0]); i++) {
+        if (boards[i].variant)
+            fprintf(out, " %s", boards[i].variant);
+        else
+            fprintf(out, " %.*s", (int)strcspn(boards[i].name, "-"), boards[i].name);
+    }
     fprintf(out, "\n");
 }
 

@@ -39,6 +39,7 @@ typedef struct {
     uint32_t clock_low, clock_high;
     int sserial_channels;           /* channels of its Smart Serial port (0 = none) */
     const uint32_t *pins;           /* pin descriptor of each IO (ports * port_width) */
+    const char *variant;            /* --board name of a firmware variant, e.g. "7i92-7i77" */
 } sim_board_t;
 
 /* A source feeding an encoder input: a stepgen's step output or a PWM-driven motor. */

@@ -13,6 +13,12 @@
 #define MPG_MODE 0x04
 #define FIELD_VOLTS 36.3f
 
+#define NV_GLOBALS                                                                              \
+    {"swrevision", "none", SSLBP_TYPE_UNSIGNED, SSLBP_DIR_IN, 16, 0, 0, 0, true, 14},              \
+    {"nvbaudrate", "none", SSLBP_TYPE_NONVOL_UNSIGNED, SSLBP_DIR_OUT, 8, 0, 11, 0, true, 9},       \
+    {"nvunitnumber", "none", SSLBP_TYPE_NONVOL_UNSIGNED, SSLBP_DIR_OUT, 32, 0, 0, 0, true, 0},     \
+    {"nvwatchdogtimeout", "ms", SSLBP_TYPE_NONVOL_UNSIGNED, SSLBP_DIR_OUT, 16, 0, 65535, 0, true, 50}
+
 static const sim_record_def_t records_7i76[] = {
     {"output", "none", SSLBP_TYPE_BITS, SSLBP_DIR_OUT, 16, 0, 0, ALL_MODES, false, 0},
     {"spinout", "none", SSLBP_TYPE_UNSIGNED, SSLBP_DIR_OUT, 16, 0, 100, ALL_MODES, false, 0},
@@ -26,23 +32,58 @@ static const sim_record_def_t records_7i76[] = {
     {"fieldvoltage", "volt", SSLBP_TYPE_UNSIGNED, SSLBP_DIR_IN, 8, 0, FIELD_VOLTS, MPG_MODE, false, 0},
     {"encoder0", "count", SSLBP_TYPE_ENCODER, SSLBP_DIR_IN, 8, 0, 1, MPG_MODE, false, 0},
     {"encoder1", "count", SSLBP_TYPE_ENCODER, SSLBP_DIR_IN, 8, 0, 1, MPG_MODE, false, 0},
-    {"swrevision", "none", SSLBP_TYPE_UNSIGNED, SSLBP_DIR_IN, 16, 0, 0, 0, true, 14},
-    {"nvbaudrate", "none", SSLBP_TYPE_NONVOL_UNSIGNED, SSLBP_DIR_OUT, 8, 0, 11, 0, true, 9},
-    {"nvunitnumber", "none", SSLBP_TYPE_NONVOL_UNSIGNED, SSLBP_DIR_OUT, 32, 0, 0, 0, true, 0},
-    {"nvwatchdogtimeout", "ms", SSLBP_TYPE_NONVOL_UNSIGNED, SSLBP_DIR_OUT, 16, 0, 65535, 0, true, 50},
+    NV_GLOBALS,
 };
 
-static const sim_remote_type_t types[] = {
-    {"7I76", "standard", {"io_spin", "io_ana_spin", "io_enc_ana_spin_fv"}, 3, records_7i76,
-     sizeof(records_7i76) / sizeof(records_7i76[0]), 50},
+/* 7I77 channel 0: field I/O (modes 0 input_output .. 3 io_encoder_analog_fieldvoltage). */
+static const sim_record_def_t records_7i77_io[] = {
+    {"output", "none", SSLBP_TYPE_BITS, SSLBP_DIR_OUT, 16, 0, 0, 0x0F, false, 0},
+    {"input", "none", SSLBP_TYPE_BITS, SSLBP_DIR_IN, 32, 0, 0, 0x0F, false, 0},
+    {"analogin0", "volt", SSLBP_TYPE_UNSIGNED, SSLBP_DIR_IN, 8, 0, FIELD_VOLTS, 0x0E, false, 0},
+    {"analogin1", "volt", SSLBP_TYPE_UNSIGNED, SSLBP_DIR_IN, 8, 0, FIELD_VOLTS, 0x0E, false, 0},
+    {"analogin2", "volt", SSLBP_TYPE_UNSIGNED, SSLBP_DIR_IN, 8, 0, FIELD_VOLTS, 0x0E, false, 0},
+    {"analogin3", "volt", SSLBP_TYPE_UNSIGNED, SSLBP_DIR_IN, 8, 0, FIELD_VOLTS, 0x0E, false, 0},
+    {"fieldvoltage", "volt", SSLBP_TYPE_UNSIGNED, SSLBP_DIR_IN, 8, 0, FIELD_VOLTS, 0x0C, false, 0},
+    {"encoder0", "count", SSLBP_TYPE_ENCODER, SSLBP_DIR_IN, 8, 0, 1, 0x08, false, 0},
+    {"encoder1", "count", SSLBP_TYPE_ENCODER, SSLBP_DIR_IN, 8, 0, 1, 0x08, false, 0},
+    NV_GLOBALS,
 };
 
-/* Remote type by name ("7i76"), or NULL. */
+/* 7I77 channel 1: six +-10 V servo outputs with their enables. */
+static const sim_record_def_t records_7i77_analog[] = {
+    {"analogout0", "volt", SSLBP_TYPE_SIGNED, SSLBP_DIR_OUT, 13, -10, 10, 0x01, false, 0},
+    {"analogout1", "volt", SSLBP_TYPE_SIGNED, SSLBP_DIR_OUT, 13, -10, 10, 0x01, false, 0},
+    {"analogout2", "volt", SSLBP_TYPE_SIGNED, SSLBP_DIR_OUT, 13, -10, 10, 0x01, false, 0},
+    {"analogout3", "volt", SSLBP_TYPE_SIGNED, SSLBP_DIR_OUT, 13, -10, 10, 0x01, false, 0},
+    {"analogout4", "volt", SSLBP_TYPE_SIGNED, SSLBP_DIR_OUT, 13, -10, 10, 0x01, false, 0},
+    {"analogout5", "volt", SSLBP_TYPE_SIGNED, SSLBP_DIR_OUT, 13, -10, 10, 0x01, false, 0},
+    {"analogena", "none", SSLBP_TYPE_BOOLEAN, SSLBP_DIR_OUT, 1, 0, 0, 0x01, false, 0},
+    {"spinena", "none", SSLBP_TYPE_BOOLEAN, SSLBP_DIR_OUT, 1, 0, 0, 0x01, false, 0},
+    NV_GLOBALS,
+};
+
+#define COUNT(a) ((int)(sizeof(a) / sizeof((a)[0])))
+
+/* The remote types by their mesa-sim name; a 7I77 takes two channels (I/O, then analog). */
+static const struct {
+    const char *cli;
+    sim_remote_type_t type;
+} types[] = {
+    {"7i76", {"7I76", "standard", {"io_spin", "io_ana_spin", "io_enc_ana_spin_fv"}, 3, records_7i76,
+              COUNT(records_7i76), 50}},
+    {"7i77", {"7I77", "standard", {"input_output", "io_analog", "io_analog_fieldvoltage",
+                                   "io_encoder_analog_fieldvoltage"}, 4, records_7i77_io,
+              COUNT(records_7i77_io), 50}},
+    {"7i77-analog", {"7I77", "standard", {"analogout_enables"}, 1, records_7i77_analog,
+                     COUNT(records_7i77_analog), 50}},
+};
+
+/* Remote type by mesa-sim name ("7i76", "7i77", "7i77-analog"), or NULL. */
 const sim_remote_type_t *sim_remote_type(const char *name)
 {
     for (size_t i = 0; i < sizeof(types) / sizeof(types[0]); i++)
-        if (!strcasecmp(types[i].name, name))
-            return &types[i];
+        if (!strcasecmp(types[i].cli, name))
+            return &types[i].type;
     return NULL;
 }
 
