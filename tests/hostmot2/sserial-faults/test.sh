@@ -1,5 +1,6 @@
 #!/bin/bash
-# sserial-faults: a remote that stops answering counts faults, stops its port once past fault-lim
+# sserial-faults: a remote reporting a fault raises its fault pin; unfinished do-its are counted
+# and forgiven; a remote that stops answering counts faults, stops its port once past fault-lim
 # with one report naming board, port and channel, its outputs and the board's go safe; run
 # FALSE -> TRUE restarts it once the cable is back, and the watchdog reset re-enables the board.
 . ../lib.sh
@@ -14,6 +15,12 @@ halcmd setp $R.output-01 1
 halcmd start
 wait_until "output-01 reaches the 7I76" sim_is output 0x2 get sserial 0
 wait_until "board GPIO 47 drives low" sim_is 47 0 get io 47
+sim sserial-status 0 2 > /dev/null
+wait_until "a remote reporting lost field power sets its fault pin" pin_is $R.fault TRUE
+check "comm-state carries its status byte (2)" pin_is $R.comm-state 2
+check "the port keeps running (state 3)" pin_is $P.port_state 3
+sim sserial-status 0 0 > /dev/null
+wait_until "the fault pin clears with the status" pin_is $R.fault FALSE
 sim sserial-busy 5 > /dev/null
 wait_until "unfinished do-its are counted" [ "$(halcmd getp $P.fault-count)" -ge 40 ]
 wait_until "the count decays on good cycles" pin_is $P.fault-count 0

@@ -165,7 +165,7 @@ static const struct {
     {"stale", cmd_fault}, {"delay", cmd_fault}, {"pause", cmd_fault}, {"resume", cmd_fault},
     {"bite", cmd_fault}, {"quad-error", cmd_fault}, {"stats", cmd_stats}, {"quit", cmd_quit},
     {"sserial-unplug", sim_sserial_command}, {"sserial-plug", sim_sserial_command},
-    {"sserial-busy", sim_sserial_command},
+    {"sserial-busy", sim_sserial_command}, {"sserial-status", sim_sserial_command},
 };
 
 /* Run one command line; 1 = quit. */

@@ -36,6 +36,7 @@ typedef struct {
 typedef struct {
     const sim_remote_type_t *type;      /* NULL: nothing connected */
     bool unplugged;                     /* cable pulled: nothing answers */
+    uint8_t status;                     /* status byte it reports (SSLBP_STATUS_*; 0 = ok) */
     int mode;
     bool setup, started;
     uint32_t unit;

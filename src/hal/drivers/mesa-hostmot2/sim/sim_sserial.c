@@ -78,7 +78,7 @@ static bool doit(sim_card_t *c, int chan)
     } else {
         return false;
     }
-    s->cs_in[chan] = 1u << 16;
+    s->cs_in[chan] = 1u << 16 | r->status;
     return true;
 }
 

@@ -60,9 +60,18 @@ static void set_input(sim_remote_t *r, const char *name, const char *value)
 }
 
 /* get sserial CH | set sserial CH NAME VALUE | sserial-unplug CH | sserial-plug CH |
-   sserial-busy N (the next N do-its stay unfinished). */
+   sserial-status CH N (status byte: 2 = field power lost) | sserial-busy N (the next N do-its
+   stay unfinished). */
 int sim_sserial_command(sim_card_t *c, int argc, char **argv)
 {
+    if (!strcmp(argv[0], "sserial-status")) {
+        sim_remote_t *st = remote_arg(c, argc > 1 ? argv[1] : NULL);
+        if (st) {
+            st->status = (uint8_t)strtoul(argc > 2 ? argv[2] : "0", NULL, 0);
+            sim_say("ok");
+        }
+        return 0;
+    }
     if (!strcmp(argv[0], "sserial-busy")) {
         c->sserial.busy_doits = argc > 1 ? atoi(argv[1]) : 1;
         sim_say("ok");
