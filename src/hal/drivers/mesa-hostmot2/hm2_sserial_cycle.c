@@ -157,6 +157,7 @@ void hm2_sserial_prepare_tram_write(hm2_board_t *hm2)
             cmd = SSLBP_CMD_STOP_ALL;
         } else if (p->state == HM2_SSERIAL_RUNNING && !run) {
             p->state = HM2_SSERIAL_STOPPED;
+            p->doit_sent = false;
             cmd = SSLBP_CMD_STOP_ALL;
         } else if (p->state == HM2_SSERIAL_RUNNING) {
             for (int c = 0; c < p->num_channels; c++)
@@ -166,6 +167,7 @@ void hm2_sserial_prepare_tram_write(hm2_board_t *hm2)
             p->doit_sent = true;
         } else if (run && !p->prev_run) {
             p->state = HM2_SSERIAL_STARTING;   /* the start itself is queued after the TRAM */
+            p->doit_sent = false;
         }
         p->prev_run = run;
         *p->command_write = cmd;
