@@ -11,6 +11,8 @@
 #define TP_KINK_SMOOTH 1e-9
 /* Share of the tolerance the blend sizing aims at; the rest covers estimate errors. */
 #define TP_TOL_SHARE 0.95
+/* G64 without P: the corner deviation the blend is sized for, as a share of the shorter move. */
+#define TP_NO_TOL_SHARE 0.25
 #define TP_BLEND_TRIES 4
 /* Turns above this (rad) are corners: blends on both sides of a move meet without curvature. */
 #define TP_TILE_MAX_TURN 0.35
@@ -85,7 +87,13 @@ static double blend_want(tp_planner_t *tp, tp_seg_t *a, tp_seg_t *b, const tp_co
     w->kink = c->kink;
     w->acc = TP_WANT_ACC_SHARE * acc;
     w->jerk = jerk > 0.0 ? TP_WANT_JERK_SHARE * jerk : 0.0;
-    w->cap = tol > 0.0 ? tp_blend_tol_cut(c, TP_TOL_SHARE * tol) : INFINITY;
+    /* G64 without P still sizes the blend so the path passes within a quarter of the shorter
+     * move of the corner (as LinuxCNC): a sharp corner between long moves is not cut across
+     * half their length */
+    int lines = a->in.kind == TP_SEG_LINE && b->in.kind == TP_SEG_LINE;
+    double size_tol = tol > 0.0 ? TP_TOL_SHARE * tol
+                      : a->tol > 0.0 || !lines ? 0.0 : TP_NO_TOL_SHARE * fmin(a->geo.len, b->geo.len);
+    w->cap = size_tol > 0.0 ? tp_blend_tol_cut(c, size_tol) : INFINITY;
     w->v_need = v_need;
     return want_at(w, v_need);
 }

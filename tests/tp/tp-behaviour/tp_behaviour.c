@@ -140,6 +140,30 @@ static void corner_modes(void)
     }
 }
 
+/* G64 without P at a sharp corner between long moves: the path passes within a quarter of the
+ * shorter move (LinuxCNC's size), not across half of each. */
+static void sharp_corner_no_tolerance(void)
+{
+    tp_planner_t *tp = machine(0.0);
+    tp_cycle_in_t in = inputs();
+    tp_planner_set_term_cond(tp, TP_TERM_COND_BLEND, 0.0);
+    tp_segment_t a = move(5, 1, 0, 4.0, 1), b = move(0, 2, 0, 4.0, 2);
+    tp_planner_add(tp, &a);
+    tp_planner_add(tp, &b);
+    tp_cycle_out_t out;
+    double x_max = 0.0;
+    for (int k = 0; k < 20000; k++) {
+        tp_planner_run_cycle(tp, &in, &out);
+        x_max = fmax(x_max, out.pos.tran.x);
+        if (out.done)
+            break;
+    }
+    double quarter = 0.25 * sqrt(26.0);
+    printf("G64 sharp corner: the path passes %.2f from the corner (a quarter of the move: %.2f)\n", 5.0 - x_max,
+           quarter);
+    tp_planner_destroy(tp);
+}
+
 /* Peak speed of a long X move with the given feed, feed scale and rapid/feed type. */
 static double peak(double vel, double fs, double rs, int rapid, double af)
 {
@@ -522,6 +546,7 @@ int main(void)
     exact_modes();
     lone_move();
     corner_modes();
+    sharp_corner_no_tolerance();
     overrides();
     hold_and_pause();
     abort_move();
