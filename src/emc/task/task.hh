@@ -93,6 +93,7 @@ private:
     bool execute_line_result(InterpStatus st, bool mdi);
     void start_mdi(const std::string &text);
     void mdi_cycle();
+    void mdi_call_lines();
     void program_cycle();
     void interp_error(bool mdi);
     void finish_synch();
@@ -186,6 +187,8 @@ private:
     int wait_input_type_ = 0;
     double wait_input_deadline_ = 0;
     int wait_input_start_ = 0;
+    bool wait_input_fresh_ = false;   // M66: inputs not yet sampled by motion since it was issued
+    uint32_t wait_input_heartbeat_ = 0;
     double orient_deadline_ = 0;
     int orient_spindle_ = 0;
     pid_t system_pid_ = -1;

@@ -71,6 +71,10 @@ bool Task::exec_waiting_done()
 // M66: the input reached the wanted state, or the timeout passed (then #5399 = -1).
 bool Task::input_wait_done()
 {
+    // the inputs must come from a servo cycle that began after M66 was issued (two heartbeats:
+    // the one running at issue time may have sampled them earlier)
+    if (wait_input_fresh_ && mot_ && (int32_t)(mst_.heartbeat - wait_input_heartbeat_) < 2) return false;
+    wait_input_fresh_ = false;
     if (wait_input_index_ < 0) return true;
     int idx = wait_input_index_;
     bool met = false;
@@ -167,11 +171,13 @@ void Task::start_input_wait(const EMC_AUX_INPUT_WAIT &w)
     wait_input_digital_ = w.input_type == EMC_AUX_INPUT_DIGITAL;
     wait_input_type_ = w.wait_type;
     st_.task.input_timeout = 0;
+    wait_input_fresh_ = true;
+    wait_input_heartbeat_ = mst_.heartbeat;
+    exec_state_ = EMC_TASK_EXEC_WAITING_FOR_IO;
     if (w.wait_type == EMC_AUX_WAIT_IMMEDIATE || w.index < 0 || w.index >= EMCMOT_MAX_DIO) return;
     wait_input_index_ = w.index;
     wait_input_start_ = mst_.synch_di[w.index];
     wait_input_deadline_ = now_ + w.timeout;
-    exec_state_ = EMC_TASK_EXEC_WAITING_FOR_IO;
 }
 
 // M100-M199: run the user's program (sh -c "path P Q") and wait for it.

@@ -263,22 +263,30 @@ void Task::start_mdi(const std::string &text)
     execute_line_result(st, true);
 }
 
+// The next lines of an MDI call (O-call, remapped code) in progress, a cycle's worth.
+void Task::mdi_call_lines()
+{
+    for (int n = 0; mdi_active_ && !wait_synch_ && interp_->state().call_level > 0 && n < LINES_PER_CYCLE; n++) {
+        InterpStatus st = interp_->execute_next();
+        if (!execute_line_result(st, true)) break;
+    }
+}
+
 // MDI: continue a multi-line call, hand over the next queued text, finish when all is done.
 void Task::mdi_cycle()
 {
     if (wait_synch_ && list_.empty() && !has_pending_ && exec_state_ == EMC_TASK_EXEC_DONE &&
         motion_done() && io_.done())
         finish_synch();
-    for (int n = 0; mdi_active_ && !wait_synch_ && interp_->state().call_level > 0 && n < LINES_PER_CYCLE; n++) {
-        InterpStatus st = interp_->execute_next();
-        if (!execute_line_result(st, true)) break;
-    }
+    mdi_call_lines();
     if (!mdi_active_ || wait_synch_ || interp_->state().call_level > 0) return;
     if (!list_.empty() || has_pending_) return;
     if (!mdi_queue_.empty()) {
         std::string next = mdi_queue_.front();
         mdi_queue_.pop_front();
         start_mdi(next);
+        // a call (or a remapped code) runs its first lines now, as a command started at once does
+        mdi_call_lines();
         return;
     }
     if (exec_state_ == EMC_TASK_EXEC_DONE && motion_done() && io_.done()) {

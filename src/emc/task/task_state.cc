@@ -37,6 +37,7 @@ void Task::reset_plan()
     st_.task.motionLine = 0;
     if (system_pid_ > 0) kill(system_pid_, SIGTERM);
     wait_input_index_ = -1;
+    wait_input_fresh_ = false;
     canon_->flush();
     list_.clear();
 }
