@@ -56,8 +56,21 @@ static double blend_tol(const tp_seg_t *a, const tp_seg_t *b)
 /* Cut a blend described by w wants for speed v through its corner. */
 static double want_at(const tp_want_t *w, double v)
 {
-    tp_corner_t c = {NULL, NULL, w->theta, w->kink};
+    tp_corner_t c = {NULL, NULL, w->theta, w->kink, w->shape};
     return fmin(w->cap, TP_WANT_MARGIN * tp_blend_need_cut(&c, v, w->acc, w->jerk));
+}
+
+/* Shape of a blend: G2 where jerk is limited or where the tolerance lets a G2 blend pass at the
+ * speed wanted; otherwise (trapezoid planning, a corner the tolerance slows down) the parabolic G1
+ * blend, which turns with the least acceleration a cut of that size allows. */
+static void choose_shape(const tp_planner_t *tp, const tp_corner_t *c, tp_want_t *w, double tol)
+{
+    if (tp->type == TP_PLANNER_SCURVE || want_at(w, w->v_need) < w->cap)
+        return;
+    tp_corner_t g1 = *c;
+    g1.shape = TP_BLEND_G1;
+    w->shape = TP_BLEND_G1;
+    w->cap = tol > 0.0 ? tp_blend_tol_cut(&g1, TP_TOL_SHARE * tol) : INFINITY;
 }
 
 /* Symmetric cut a blend between a and b wants: enough for the requested speed, within the tolerance. */
@@ -83,10 +96,12 @@ static double blend_want(tp_planner_t *tp, tp_seg_t *a, tp_seg_t *b, const tp_co
     double tol = blend_tol(a, b);
     w->theta = c->theta;
     w->kink = c->kink;
+    w->shape = c->shape;
     w->acc = TP_WANT_ACC_SHARE * acc;
     w->jerk = jerk > 0.0 ? TP_WANT_JERK_SHARE * jerk : 0.0;
     w->cap = tol > 0.0 ? tp_blend_tol_cut(c, TP_TOL_SHARE * tol) : INFINITY;
     w->v_need = v_need;
+    choose_shape(tp, c, w, tol);
     return want_at(w, v_need);
 }
 
@@ -150,7 +165,8 @@ static tp_vec_t vertex_curvature(const tp_seg_t *a, const tp_seg_t *b)
 static void tile_curvature(tp_seg_t *a, tp_seg_t *b, tp_seg_t *c)
 {
     b->k_in_set = b->k_out_set = 0;
-    if (!b->tiled || b->geo.kind != TP_GEO_LINE || !a || !c)
+    if (!b->tiled || b->geo.kind != TP_GEO_LINE || !a || !c || b->wf_in.shape != TP_BLEND_G2 ||
+        b->wf_out.shape != TP_BLEND_G2)
         return;
     const tp_vec_t *u = &b->geo.u.line.dir;
     double uu = tp_vec_dot(u, u);
@@ -180,6 +196,7 @@ static int build_blend(tp_planner_t *tp, tp_seg_t *a, tp_seg_t *b, int a_free, d
     tp_blend_spec_t spec;
     double tol = blend_tol(a, b);
     tp_corner_describe(&c, &a->geo, &b->geo);
+    c.shape = a->wf_out.shape;
     memset(&spec, 0, sizeof(spec));
     spec.da = a->cut_out;
     spec.db = b->cut_in;
