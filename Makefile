@@ -2,6 +2,8 @@
 # see build/rules.mk for the helpers (userprog, userlib, rtmodule, unittest, pymodule).
 TOPDIR := $(CURDIR)
 .DEFAULT_GOAL := all
+# A recipe that fails (halcompile keeps its partial output, as LinuxCNC's does) leaves no target behind.
+.DELETE_ON_ERROR:
 
 -include Makefile.inc
 

@@ -72,6 +72,17 @@ TARGETS += rtlib/$(1).so
 endef
 rtmodule = $(eval $(call rtmodule_tmpl,$(1),$(2),$(3)))
 
+# Test-only realtime modules: built like rtmodule but into objects/testlib/, so rtlib/ holds only
+# what users load. Tests reach them through tests/lib/testmods.sh (a private RTLIB_DIR).
+define testmodule_tmpl
+objects/testlib/$(1).so: $(call robjs,$(2)) build/mkversion.sh
+	@mkdir -p $$(@D) objects/rt/ver
+	build/mkversion.sh objects/rt/ver/$(1).ver $(call robjs,$(2))
+	$(call linker,$(2)) $$(LDFLAGS_ALL) -shared -Wl,--version-script=objects/rt/ver/$(1).ver -o $$@ $(call robjs,$(2)) $(3)
+TARGETS += objects/testlib/$(1).so
+endef
+testmodule = $(eval $(call testmodule_tmpl,$(1),$(2),$(3)))
+
 define unittest_tmpl
 objects/unit/$(1): $(call uobjs,$(2)) $(filter lib/%.so,$(3))
 	@mkdir -p $$(@D)

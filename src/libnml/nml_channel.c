@@ -3,9 +3,29 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
+#include <unistd.h>
 #include <time.h>
 
 #include "nml_shm.h"
+
+/* True when host names this machine: localhost, a 127.x.y.z or ::1 address, or our own
+   host name. A REMOTE line for this machine reaches the same shared memory as LOCAL
+   (LinuxCNC would go through linuxcncsvr's TCP port; OpenEMC serves nothing there). */
+static int host_is_this_machine(const char *host)
+{
+    char self[256];
+
+    if (!strcasecmp(host, "localhost") || !strncasecmp(host, "localhost.", 10) ||
+        !strncmp(host, "127.", 4) || !strcmp(host, "::1"))
+        return 1;
+    if (gethostname(self, sizeof self) == 0) {
+        self[sizeof self - 1] = 0;
+        if (!strcasecmp(host, self))
+            return 1;
+    }
+    return 0;
+}
 
 /* Find the B and P lines of a buffer and process; 0 or -EINVAL with err set. */
 static int find_lines(const nml_config_t *cfg, const char *buffer, const char *process,
@@ -24,9 +44,10 @@ static int find_lines(const nml_config_t *cfg, const char *buffer, const char *p
                  process, buffer);
         return -EINVAL;
     }
-    if (p->remote) {
-        snprintf(err, errlen, "%s:%d: process '%s' reaches buffer '%s' REMOTE; OpenEMC "
-                 "serves NML buffers locally only", cfg->path, p->line, process, buffer);
+    if (p->remote && !host_is_this_machine(p->host)) {
+        snprintf(err, errlen, "%s:%d: process '%s' reaches buffer '%s' REMOTE on host '%s'; "
+                 "OpenEMC serves NML buffers on this machine only", cfg->path, p->line,
+                 process, buffer, p->host);
         return -EINVAL;
     }
     ch->buffer = *b;

@@ -32,16 +32,14 @@ static int parse_number(const rtapi_param_info_t *info, const char *text, size_t
     char buf[64], *end;
     long value = 0;
 
-    if (len >= sizeof buf)
-        return -EINVAL;
+    if (len == 0 || len >= sizeof buf)
+        return -EINVAL; /* an empty number (step_type= or 0,,1) is not 0 */
     memcpy(buf, text, len);
     buf[len] = '\0';
-    if (len > 0) {
-        errno = 0;
-        value = strtol(buf, &end, 0);
-        if (*end || errno == ERANGE)
-            return -EINVAL;
-    }
+    errno = 0;
+    value = strtol(buf, &end, 0);
+    if (*end || errno == ERANGE)
+        return -EINVAL;
     if (info->type == 'l') {
         ((long *)info->address)[index] = value;
         return 0;
@@ -67,9 +65,13 @@ static int set_element(const rtapi_param_info_t *info, const char *text, size_t 
     return 0;
 }
 
-/* Report a malformed element: `elem' invalid for parameter `arg'. */
+/* Report a malformed element: `elem' invalid for parameter `arg' (an empty one says so). */
 static int bad_value(const char *text, size_t len, const char *arg, char *err, size_t errlen)
 {
+    if (len == 0) {
+        snprintf(err, errlen, "empty value invalid for parameter `%s'", arg);
+        return -EINVAL;
+    }
     snprintf(err, errlen, "`%.*s' invalid for parameter `%s'", (int)len, text, arg);
     return -EINVAL;
 }

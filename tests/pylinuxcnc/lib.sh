@@ -8,7 +8,7 @@ PYTEST_CONFIG="$EMC2_HOME/tests/pylinuxcnc/config/machine.ini"
 start_machine() {
     local ini="${1:-$PYTEST_CONFIG}"
     if [ -n "${OPENEMC_TEST_MACHINE:-}" ]; then
-        $OPENEMC_TEST_MACHINE "$ini" &
+        $OPENEMC_TEST_MACHINE "$ini" >&2 &
         MACHINE_PID=$!
     else
         SVR_PID=$(linuxcncsvr -ini "$ini" --daemon) || return 1

@@ -1,14 +1,14 @@
 # lib.sh: sourced by tests/rtapi/*/test.sh. Sets up a private RTLIB_DIR where the
-# RTAPI test modules live and rtapi_test_hal stands in for hal_lib, so these tests
-# exercise rtapi_app alone. Call rt_cleanup at the end (also run on exit).
+# RTAPI test modules (built into objects/testlib/) live and rtapi_test_hal stands in
+# for hal_lib, so these tests exercise rtapi_app alone. Call rt_cleanup at the end (also run on exit).
 
 rt_top=${EMC2_HOME:-$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)}
 export PATH=$rt_top/bin:$PATH
 rt_lib=$(mktemp -d /tmp/rtapi-test.XXXXXX)
 for rt_mod in params noexit undef leak task; do
-    ln -s "$rt_top/rtlib/rtapi_test_$rt_mod.so" "$rt_lib/rtapi_test_$rt_mod.so"
+    ln -s "$rt_top/objects/testlib/rtapi_test_$rt_mod.so" "$rt_lib/rtapi_test_$rt_mod.so"
 done
-ln -s "$rt_top/rtlib/rtapi_test_hal.so" "$rt_lib/hal_lib.so"
+ln -s "$rt_top/objects/testlib/rtapi_test_hal.so" "$rt_lib/hal_lib.so"
 export RTLIB_DIR=$rt_lib
 # runtests gives this test its instance exclusively: a master answering on it is
 # debris of an earlier run, which would serve the wrong RTLIB_DIR

@@ -57,6 +57,8 @@ int kinematicsSwitch(int new_type)
 {
     if (entry.highest_type == 0)
         return 0;
+    if (entry.announce_switch)
+        rtapi_print("kinematicsSwitch(): type=%d\n", new_type);
     if (kins_switch_valid(new_type, entry.highest_type) < 0)
         return -1;
     if (entry.switched)

@@ -10,6 +10,7 @@ typedef struct kins_entry {
     int (*build)(int comp_id);      /* make the pins; 0 or negative errno */
     int highest_type;               /* 0: not switchable; else kinematicsSwitch takes 0..this */
     void (*switched)(int new_type); /* called with every accepted kinematicsSwitch (or NULL) */
+    int announce_switch;            /* print "kinematicsSwitch(): type=N" first (LinuxCNC's templates) */
 } kins_entry_t;
 
 /* The exported table; kins_entry_start fills in the module name. */

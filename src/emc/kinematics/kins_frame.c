@@ -49,6 +49,6 @@ int rtapi_app_main(void)
         if (r < 0)
             return r;
     }
-    kins_entry_t entry = {kins_frame_def.name, frame_build, 0, NULL};
+    kins_entry_t entry = {kins_frame_def.name, frame_build, 0, NULL, 0};
     return kins_entry_start(&entry);
 }

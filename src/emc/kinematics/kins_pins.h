@@ -14,5 +14,8 @@ typedef struct {
  * their defaults; 0 or negative errno. */
 int kins_float_pins(int comp_id, const char *prefix, const kins_pin_def_t *defs, int count,
                     hal_float_t ***pins);
+/* The same with another direction (tripodkins' pins are I/O). */
+int kins_float_pins_dir(int comp_id, const char *prefix, const kins_pin_def_t *defs, int count,
+                        hal_pin_dir_t dir, hal_float_t ***pins);
 
 #endif

@@ -39,22 +39,28 @@ static int native_active(void)
 int kinematicsForward(const double *joint, EmcPose *world,
                       const KINEMATICS_FORWARD_FLAGS *fflags, KINEMATICS_INVERSE_FLAGS *iflags)
 {
+    int r = 0;
     (void)fflags;
-    (void)iflags;
-    if (native_active())
-        return switchkins_def.native_forward(joint, world);
-    if (active_type == 2)
-        *pins->userk_fct += 1;
-    kins_identity_forward(&coords, joint, world);
-    return 0;
+    if (native_active() && switchkins_def.native_forward_flags) {
+        r = switchkins_def.native_forward_flags(joint, world, iflags);
+    } else if (native_active()) {
+        r = switchkins_def.native_forward(joint, world);
+    } else {
+        if (active_type == 2)
+            *pins->userk_fct += 1;
+        kins_identity_forward(&coords, joint, world);
+    }
+    if (r == 0 && switchkins_def.after_forward)
+        r = switchkins_def.after_forward(joint);
+    return r;
 }
 
 /* World -> joints through the active kinematics. */
 int kinematicsInverse(const EmcPose *world, double *joint,
                       const KINEMATICS_INVERSE_FLAGS *iflags, KINEMATICS_FORWARD_FLAGS *fflags)
 {
-    (void)iflags;
-    (void)fflags;
+    if (native_active() && switchkins_def.native_inverse_flags)
+        return switchkins_def.native_inverse_flags(world, joint, iflags, fflags);
     if (native_active())
         return switchkins_def.native_inverse(world, joint);
     if (active_type == 2)
@@ -75,6 +81,8 @@ static void switched(int new_type)
     active_type = new_type;
     for (int i = 0; i < 3; i++)
         *pins->is_type[i] = (i == new_type);
+    if (switchkins_def.on_switch)
+        switchkins_def.on_switch(new_type);
 }
 
 /* Create kinstype.is-0/1/2 and userk.fct/ict. */
@@ -119,6 +127,6 @@ int rtapi_app_main(void)
     }
     identity_first = switchkins_def.identity_first_allowed && sparm &&
                      !strcmp(sparm, "identityfirst");
-    kins_entry_t entry = {switchkins_def.name, switchkins_build, 2, switched};
+    kins_entry_t entry = {switchkins_def.name, switchkins_build, 2, switched, 0};
     return kins_entry_start(&entry);
 }

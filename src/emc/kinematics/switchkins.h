@@ -19,6 +19,16 @@ typedef struct switchkins_def {
     switchkins_fwd_fn native_forward;
     switchkins_inv_fn native_inverse;
     int identity_first_allowed;      /* sparm=identityfirst swaps types 0 and 1 */
+    /* Optional: runs after every successful forward of any type (genhexkins' skgui pins); its
+     * non-zero result is returned by kinematicsForward. */
+    int (*after_forward)(const double *joints);
+    /* Optional: told each time a type is selected (also the type 0 selected at load). */
+    void (*on_switch)(int new_type);
+    /* Optional flag-aware native kinematics (three21kins' arm configuration); when set they are
+     * used instead of native_forward/native_inverse. */
+    int (*native_forward_flags)(const double *joints, EmcPose *pos, KINEMATICS_INVERSE_FLAGS *iflags);
+    int (*native_inverse_flags)(const EmcPose *pos, double *joints, const KINEMATICS_INVERSE_FLAGS *iflags,
+                                KINEMATICS_FORWARD_FLAGS *fflags);
 } switchkins_def_t;
 
 /* Each switchable module defines exactly one of these. */

@@ -1,6 +1,7 @@
 // interp.cc: interpreter life cycle: init, open, line loop, error capture, close and exit.
-#include <cmath>
 #include <algorithm>
+#include <cctype>
+#include <cmath>
 #include <cstdio>
 
 #include "inifile.hh"
@@ -50,8 +51,9 @@ void Interp::init()
     INTERP_FRAME();
     Canon &c = real_out_;
     c.init_canon();
-    s_.machine_units = c.get_external_length_units() > 0.5 ? CANON_UNITS_MM : CANON_UNITS_INCHES;
-    s_.units = CANON_UNITS_MM;
+    s_.external_length_units = c.get_external_length_units();
+    s_.machine_units = s_.external_length_units > 0.5 ? CANON_UNITS_MM : CANON_UNITS_INCHES;
+    s_.units = start_in_machine_units_ ? c.get_external_length_unit_type() : CANON_UNITS_MM;
     double clear = s_.units == CANON_UNITS_MM ? 1.0 : 0.050;
     s_.peck_clearance_g73 = s_.settings.g73_peck_clearance >= 0 ? s_.settings.g73_peck_clearance : clear;
     s_.peck_clearance_g83 = s_.settings.g83_peck_clearance >= 0 ? s_.settings.g83_peck_clearance : clear;
@@ -70,12 +72,12 @@ void Interp::init()
     if (index < 1 || index > 9) index = 1;
     s_.origin_index = index;
     s_.params[5220] = index;
-    double k = s_.machine_to_program();
     bool apply = s_.params[5210] != 0.0 && !s_.settings.disable_g92_persistence;
     for (int i = 0; i < AX_COUNT; i++) {
-        double scale = (i >= AX_A && i <= AX_C) ? 1.0 : k;
-        s_.origin_offset[i] = s_.params[5201 + 20 * index + i] * scale;
-        s_.axis_offset[i] = apply ? s_.params[5211 + i] * scale : 0.0;
+        bool rot = i >= AX_A && i <= AX_C;
+        double g5x = s_.params[5201 + 20 * index + i], g92 = s_.params[5211 + i];
+        s_.origin_offset[i] = rot ? g5x : s_.user_to_program(g5x);
+        s_.axis_offset[i] = apply ? (rot ? g92 : s_.user_to_program(g92)) : 0.0;
     }
     s_.rotation_xy = s_.params[5210 + 20 * index];
     emit_g5x();
@@ -140,6 +142,12 @@ void Interp::open(const std::string &path)
     INTERP_FRAME();
     auto f = load_file(path);
     if (!f) throw InterpError("Unable to open file <" + path + ">");
+    // LinuxCNC reads up to the first non-blank line while opening: a file without one fails
+    // there, before the interpreter is reset (so no ON_RESET is emitted)
+    bool blank = std::all_of(f->lines.begin(), f->lines.end(), [](const std::string &l) {
+        return std::all_of(l.begin(), l.end(), [](unsigned char ch) { return std::isspace(ch); });
+    });
+    if (blank) throw InterpError("File ended with no percent sign (%)");
     open_source(f);
 }
 

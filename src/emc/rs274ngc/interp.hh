@@ -135,6 +135,8 @@ public:
     void set_user_m_handler(UserMHandler fn) override { user_m_ = std::move(fn); }
     // executable M<m> from PROGRAM_PREFIX, then USER_M_PATH; "" when none
     std::string find_user_m(int m) const;
+    // start in the machine's units (task) instead of mm (rs274's behaviour)
+    void set_start_in_machine_units(bool on) { start_in_machine_units_ = on; }
     // mark the process as task (#<_task> = 1)
     void set_task(bool t) override { task_ = t; }
     void set_loop_on_main_m99(bool on) override { loop_main_m99_ = on; }
@@ -415,6 +417,7 @@ private:
     int skip_start_ = 0;
     bool block_delete_ = false;
     bool task_ = false;
+    bool start_in_machine_units_ = false;
     bool loop_main_m99_ = false;     // M99 in the main program restarts it (task)
     bool file_open_ = false;
     bool eof_error_ = false;

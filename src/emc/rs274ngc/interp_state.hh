@@ -135,6 +135,7 @@ struct InterpState {
     CanonPlane plane = CANON_PLANE_XY;
     CanonUnits units = CANON_UNITS_MM;
     CanonUnits machine_units = CANON_UNITS_INCHES;  // units of stored parameters / tool table
+    double external_length_units = 1.0 / 25.4;      // machine units per mm (the canon's answer)
     bool distance_incremental = false;    // G91
     bool ijk_absolute = false;            // G90.1
     bool lathe_diameter = false;          // G7
@@ -208,10 +209,22 @@ struct InterpState {
     double param(int n) const { return params[n]; }
     // set numbered parameter n
     void set_param(int n, double v) { params[n] = v; }
-    // 25.4 when program units are mm and the machine is inch, etc.: machine units -> program units
-    double machine_to_program() const {
-        if (units == machine_units) return 1.0;
-        return units == CANON_UNITS_MM ? 25.4 : 1.0 / 25.4;
+    // program units per mm (the divisor LinuxCNC's unit conversion uses after the machine's)
+    double units_per_mm_divisor() const
+    {
+        return units == CANON_UNITS_INCHES ? 25.4 : units == CANON_UNITS_CM ? 10.0 : 1.0;
+    }
+    // a stored length (machine units: parameters, tool table) in program units, computed as
+    // LinuxCNC does (divided by the canon's length units, then by 25.4 for inch programs), so
+    // values that round at a 5 print the same
+    double user_to_program(double v) const
+    {
+        return v / external_length_units / units_per_mm_divisor();
+    }
+    // a program-unit length in machine units (LinuxCNC's inverse arithmetic)
+    double program_to_user(double v) const
+    {
+        return v * external_length_units * units_per_mm_divisor();
     }
 };
 

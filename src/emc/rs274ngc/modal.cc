@@ -75,6 +75,10 @@ void Interp::do_comp(Block &b)
     int orient = 0;
     double radius = g == 411 || g == 421 ? dynamic_comp_radius(b, g, orient)
                                          : tool_comp_radius(b, orient);
+    if (radius < 0) {  // a negative table diameter compensates on the other side
+        radius = -radius;
+        g = g == 410 ? 420 : 410;
+    }
     bool left = g == 410 || g == 411;
     out().comment(left ? "interpreter: cutter radius compensation on left"
                        : "interpreter: cutter radius compensation on right");
@@ -114,7 +118,7 @@ double Interp::tool_comp_radius(const Block &b, int &orient) const
     if (index < 0)
         throw InterpError("Requested tool " + std::to_string(tool) + " not found in the tool table");
     orient = s_.tools[index].orientation;
-    return s_.tools[index].diameter / 2.0 * s_.machine_to_program();
+    return s_.user_to_program(s_.tools[index].diameter) / 2.0;
 }
 
 // Tool-data index of a block's H word (none or H0: the loaded tool).
@@ -150,6 +154,7 @@ Pose Interp::tlo_words(const Block &b, int g) const
     bool any = false;
     for (int i = 0; i < 6; i++) any = any || b.word(axes[i]);
     if (g == 432 && any && b.word('h')) throw InterpError("G43.2: Can not have both H and axis words");
+    if (g == 432 && !any && !b.word('h')) throw InterpError("G43.2: No axes specified and H word missing");
     Pose tlo = s_.tool_offset;
     Pose add = g == 432 && !any ? tool_pose(s_.tools[h_word_index(b)]) : Pose{};
     for (int i = 0; i < 6; i++) {
@@ -168,9 +173,8 @@ void Interp::apply_tlo(const Pose &tlo)
     s_.tool_offset = tlo;
     s_.current = machine_to_program_pose(m);
     out().use_tool_length_offset(to_canon_pose(tlo));
-    double k = 1.0 / s_.machine_to_program();
     for (int i = 0; i < AX_COUNT; i++)
-        s_.params[5081 + i] = (i >= AX_A && i <= AX_C) ? tlo[i] : tlo[i] * k;
+        s_.params[5081 + i] = (i >= AX_A && i <= AX_C) ? tlo[i] : s_.program_to_user(tlo[i]);
 }
 
 // G54..G59.3 (step 21).

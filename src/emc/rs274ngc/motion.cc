@@ -171,12 +171,12 @@ void Interp::move_home(const Block &b, int code)
     out().straight_traverse(s_.sequence_number, to_canon_pose(mid));
     s_.current = mid;
     int base = code == 280 ? PARAM_G28_HOME : PARAM_G30_HOME;
-    double k = s_.machine_to_program();
     Pose m = program_to_machine_pose(mid);
     bool any = any_axis(b);
     for (int i = 0; i < AX_COUNT; i++) {
         if (any && (i >= 6 || !b.word(AXES[i]))) continue;
-        m[i] = s_.params[base + i] * ((i >= AX_A && i <= AX_C) ? 1.0 : k);
+        double v = s_.params[base + i];
+        m[i] = (i >= AX_A && i <= AX_C) ? v : s_.user_to_program(v);
     }
     Pose end = machine_to_program_pose(m);
     out().straight_traverse(s_.sequence_number, to_canon_pose(end));
@@ -188,10 +188,9 @@ void Interp::store_home(int code)
 {
     INTERP_FRAME();
     int base = code == 281 ? PARAM_G28_HOME : PARAM_G30_HOME;
-    double k = s_.machine_to_program();
     Pose m = program_to_machine_pose(s_.current);
     for (int i = 0; i < AX_COUNT; i++)
-        s_.params[base + i] = m[i] / ((i >= AX_A && i <= AX_C) ? 1.0 : k);
+        s_.params[base + i] = (i >= AX_A && i <= AX_C) ? m[i] : s_.program_to_user(m[i]);
 }
 
 // G33 (spindle-synchronized move) / G33.1 (rigid tap).

@@ -11,6 +11,12 @@ const char AXES[] = "xyzabcuvw";
 // true for the rotary axes, whose values are never unit-converted
 bool rotary(int i) { return i >= AX_A && i <= AX_C; }
 
+// stored value v of axis i in program units (LinuxCNC's arithmetic; rotary values as they are)
+double user_len(const InterpState &s, int i, double v) { return rotary(i) ? v : s.user_to_program(v); }
+
+// program value v of axis i in the stored machine units
+double prog_len(const InterpState &s, int i, double v) { return rotary(i) ? v : s.program_to_user(v); }
+
 } // namespace
 
 // machine = Rot(R)(program + g92) + g5x + tlo, all in program units.
@@ -64,11 +70,10 @@ void Interp::set_origin_index(int index)
 {
     INTERP_FRAME();
     Pose m = program_to_machine_pose(s_.current);
-    double k = s_.machine_to_program();
     s_.origin_index = index;
     s_.params[5220] = index;
     for (int i = 0; i < AX_COUNT; i++)
-        s_.origin_offset[i] = s_.params[5201 + 20 * index + i] * (rotary(i) ? 1.0 : k);
+        s_.origin_offset[i] = user_len(s_, i, s_.params[5201 + 20 * index + i]);
     s_.rotation_xy = s_.params[5210 + 20 * index];
     s_.current = machine_to_program_pose(m);
 }
@@ -113,10 +118,9 @@ void Interp::g92_family(int code, const Block &b)
     INTERP_FRAME();
     if (s_.comp_side != CANON_SIDE_OFF)
         throw InterpError("Cannot change axis offsets with cutter radius comp");
-    double k = s_.machine_to_program();
     if (code == 520 || code == 920) g92_set(code, b);
     Pose stored;
-    for (int i = 0; i < AX_COUNT; i++) stored[i] = s_.params[5211 + i] * (rotary(i) ? 1.0 : k);
+    for (int i = 0; i < AX_COUNT; i++) stored[i] = user_len(s_, i, s_.params[5211 + i]);
     if (code >= 921) {
         Pose next = code == 923 ? stored : Pose{};
         for (int i = 0; i < AX_COUNT; i++) s_.current[i] += s_.axis_offset[i] - next[i];
@@ -125,7 +129,7 @@ void Interp::g92_family(int code, const Block &b)
     }
     if (code != 922)
         for (int i = 0; i < AX_COUNT; i++)
-            s_.params[5211 + i] = s_.axis_offset[i] / (rotary(i) ? 1.0 : k);
+            s_.params[5211 + i] = prog_len(s_, i, s_.axis_offset[i]);
     emit_g92();
 }
 
@@ -144,11 +148,10 @@ void Interp::g10_l2(const Block &b, int l)
 {
     INTERP_FRAME();
     int index = g10_system(b);
-    double k = s_.machine_to_program();
     Pose m = program_to_machine_pose(s_.current);
     Pose offs;
     for (int i = 0; i < AX_COUNT; i++)
-        offs[i] = s_.params[5201 + 20 * index + i] * (rotary(i) ? 1.0 : k);
+        offs[i] = user_len(s_, i, s_.params[5201 + 20 * index + i]);
     if (b.word('r')) s_.params[5210 + 20 * index] = b.value('r');
     double rot = s_.params[5210 + 20 * index];
     if (l == 20) {
@@ -160,7 +163,7 @@ void Interp::g10_l2(const Block &b, int l)
             if (b.word(AXES[i])) offs[i] = axis_word(b, i);
     }
     for (int i = 0; i < AX_COUNT; i++)
-        s_.params[5201 + 20 * index + i] = offs[i] / (rotary(i) ? 1.0 : k);
+        s_.params[5201 + 20 * index + i] = prog_len(s_, i, offs[i]);
     if (index != s_.origin_index) {
         out().comment("interpreter: setting coordinate system origin");
         return;

@@ -7,6 +7,10 @@
 
 #include "canon.hh"
 
+// inch machine's length units per mm as LinuxCNC's standalone interpreter reports them (a
+// rounded 1/25.4: conversions of stored inch values land where LinuxCNC's do)
+constexpr double SAI_INCH_UNITS_PER_MM = 0.03937007874016;
+
 // Printing canon for rs274 (and the fuzz/bench harnesses with a null stream).
 class SaiCanon : public Canon {
 public:
@@ -91,7 +95,7 @@ public:
     CanonPose get_external_position() override { return pos_; }
     CanonPose get_external_probe_position() override { return probe_; }
     double get_external_probe_tripped_value() override { return 0; }
-    double get_external_length_units() override { return machine_mm_ ? 1.0 : 1.0 / 25.4; }
+    double get_external_length_units() override { return machine_mm_ ? 1.0 : SAI_INCH_UNITS_PER_MM; }
     CanonUnits get_external_length_unit_type() override
     {
         return machine_mm_ ? CANON_UNITS_MM : CANON_UNITS_INCHES;

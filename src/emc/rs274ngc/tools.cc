@@ -20,7 +20,8 @@ void pose_set(CanonPose &p, int i, double v)
 int Interp::find_tool_index(int toolno) const
 {
     INTERP_FRAME();
-    for (size_t i = 1; i < s_.tools.size(); i++)
+    // a random changer's spindle (index 0) is a pocket too: its tool can be selected again
+    for (size_t i = s_.settings.random_toolchanger ? 0 : 1; i < s_.tools.size(); i++)
         if (s_.tools[i].toolno == toolno) return (int)i;
     return -1;
 }
@@ -106,10 +107,11 @@ void Interp::tool_change_moves()
     }
     if (s_.settings.tool_change_at_g30) {
         out().comment("AXIS,hide");
-        double k = s_.machine_to_program();
         Pose m = program_to_machine_pose(s_.current);
-        for (int i = 0; i < AX_COUNT; i++)
-            m[i] = s_.params[PARAM_G30_HOME + i] * ((i >= AX_A && i <= AX_C) ? 1.0 : k);
+        for (int i = 0; i < AX_COUNT; i++) {
+            double v = s_.params[PARAM_G30_HOME + i];
+            m[i] = (i >= AX_A && i <= AX_C) ? v : s_.user_to_program(v);
+        }
         s_.current = machine_to_program_pose(m);
         out().straight_traverse(-1, to_canon_pose(s_.current));
         out().comment("AXIS,show");
@@ -120,10 +122,7 @@ void Interp::tool_change_moves()
 void Interp::reapply_tool_length()
 {
     Pose tlo{};
-    double k = s_.machine_to_program();
-    const CanonPose &o = s_.tools[0].offset;
-    if (s_.selected_tool != 0) tlo = Pose{o.x * k, o.y * k, o.z * k, o.a, o.b, o.c,
-                                           o.u * k, o.v * k, o.w * k};
+    if (s_.selected_tool != 0) tlo = tool_pose(s_.tools[0]);
     apply_tlo(tlo);
     if (s_.selected_tool != 0) out().use_tool_length_offset(to_canon_pose(tlo));
 }
@@ -141,9 +140,9 @@ void Interp::g10_reload_tools()
 // Tool entry `t`'s offsets in program units (machine frame).
 Pose Interp::tool_pose(const CanonTool &t) const
 {
-    double k = s_.machine_to_program();
     const CanonPose &o = t.offset;
-    return Pose{o.x * k, o.y * k, o.z * k, o.a, o.b, o.c, o.u * k, o.v * k, o.w * k};
+    auto len = [this](double v) { return s_.user_to_program(v); };
+    return Pose{len(o.x), len(o.y), len(o.z), o.a, o.b, o.c, len(o.u), len(o.v), len(o.w)};
 }
 
 // The new offsets of G10 L1 (given values), L10 (current point reads the values) or L11
@@ -157,11 +156,12 @@ Pose Interp::g10_tool_offsets(const Block &b, int l, const CanonTool &t) const
         return old;
     }
     Pose m = program_to_machine_pose(s_.current);
-    double k = s_.machine_to_program();
     const int base = l == 10 ? 5201 + 20 * s_.origin_index : 5381;
     Pose q;
-    for (int i = 0; i < AX_COUNT; i++)
-        q[i] = m[i] - s_.params[base + i] * ((i >= AX_A && i <= AX_C) ? 1.0 : k);
+    for (int i = 0; i < AX_COUNT; i++) {
+        double v = s_.params[base + i];
+        q[i] = m[i] - ((i >= AX_A && i <= AX_C) ? v : s_.user_to_program(v));
+    }
     Pose shift = l == 10 ? s_.axis_offset : Pose{};
     return offsets_for_point(b, q, shift, old, s_.params[base + 9]);
 }
@@ -188,10 +188,9 @@ void Interp::g10_tool(const Block &b, int l)
     int index = g10_tool_index(b, l);
     CanonTool t = s_.tools[index];
     Pose offs = g10_tool_offsets(b, l, t);
-    double k = s_.machine_to_program();
     for (int i = 0; i < AX_COUNT; i++)
-        pose_set(t.offset, i, (i >= AX_A && i <= AX_C) ? offs[i] : offs[i] / k);
-    if (b.word('r')) t.diameter = 2.0 * b.value('r') / k;
+        pose_set(t.offset, i, (i >= AX_A && i <= AX_C) ? offs[i] : s_.program_to_user(offs[i]));
+    if (b.word('r')) t.diameter = s_.program_to_user(2.0 * b.value('r'));
     if (b.word('i')) t.frontangle = b.value('i');
     if (b.word('j')) t.backangle = b.value('j');
     if (b.word('q')) t.orientation = clamp_int(b.value('q'));

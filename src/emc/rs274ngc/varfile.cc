@@ -27,6 +27,7 @@ bool persistent(int n)
 void Interp::read_var_file()
 {
     INTERP_FRAME();
+    if (var_file_.empty()) return;   // no [RS274NGC]PARAMETER_FILE: nothing restored
     FILE *f = fopen(var_file_.c_str(), "r");
     if (!f) return;
     char line[512];
@@ -70,7 +71,7 @@ std::string Interp::var_file_line(const char *line, int &last)
 void Interp::write_var_file()
 {
     INTERP_FRAME();
-    if (var_file_bad_) return;
+    if (var_file_bad_ || var_file_.empty()) return;
     std::string tmp = var_file_ + ".new", bak = var_file_ + ".bak";
     FILE *f = fopen(tmp.c_str(), "w");
     if (!f) return;

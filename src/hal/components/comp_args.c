@@ -1,6 +1,7 @@
 /* comp_args.c: set-up shared by the hand-written configurable modules (typed pins, config specs). */
 #include "rtapi.h"
 #include "rtapi_errno.h"
+#include "rtapi_string.h"
 #include "comp_args.h"
 
 static int comp_args_id;
@@ -28,30 +29,43 @@ int comp_sel_bits(int size)
     return n;
 }
 
-/* Decimal size after the two type letters of spec, or -1 when missing, malformed or too big. */
-long comp_spec_size(const char *spec, long max_size)
-{
-    long v = 0;
-    const char *p;
-    if (!spec[0] || !spec[1] || !spec[2]) return -1;
-    for (p = spec + 2; *p; p++) {
-        if (*p < '0' || *p > '9' || v > max_size) return -1;
-        v = v * 10 + (*p - '0');
-    }
-    return v;
-}
-
-/* Size of a "TTN" spec, its type letters in lower case in types[]; logs and returns -EINVAL if bad. */
+/* Size and type letters of a config string: digits and up to two type letters in any order
+ * ("bb8", "8bb", "b8f"); one letter means the same output type. Logs and returns -EINVAL if bad. */
 long comp_spec_parse(const char *who, const char *spec, long max_size, char types[2])
 {
-    long size = comp_spec_size(spec, max_size);
-    if (!comp_type_word(spec[0]) || !comp_type_word(spec[1]) || size < 1 || size > max_size) {
-        rtapi_print_msg(RTAPI_MSG_ERR, "%s: ERROR: bad config '%s' (want two of b f s u "
-                        "and a size 1..%d)\n", who, spec, (int)max_size);
+    long size = 0;
+    int ntypes = 0;
+    for (const char *p = spec; *p; p++) {
+        if (*p >= '0' && *p <= '9') {
+            size = size * 10 + (*p - '0');
+            if (size > max_size)
+                size = max_size;
+        } else if (comp_type_word(*p)) {
+            if (ntypes == 2) {
+                rtapi_print_msg(RTAPI_MSG_ERR, "%s: too many type specifiers in fmt string\n", who);
+                return -EINVAL;
+            }
+            types[ntypes++] = *p | 0x20;
+        } else {
+            rtapi_print_msg(RTAPI_MSG_ERR, "%s: invalid character in fmt string\n", who);
+            return -EINVAL;
+        }
+    }
+    if (size == 0) {
+        rtapi_print_msg(RTAPI_MSG_ERR, "%s: No entry count given\n", who);
         return -EINVAL;
     }
-    types[0] = spec[0] | 0x20;
-    types[1] = spec[1] | 0x20;
+    if (size == 1) {
+        rtapi_print_msg(RTAPI_MSG_ERR, "%s: A one-element %s makes no sense\n", who,
+                        strstr(who, "demux") ? "demux" : "mux");
+        return -EINVAL;
+    }
+    if (ntypes == 0) {
+        rtapi_print_msg(RTAPI_MSG_ERR, "%s: No type specifiers in fmt string\n", who);
+        return -EINVAL;
+    }
+    if (ntypes == 1)
+        types[1] = types[0];
     return size;
 }
 
@@ -59,7 +73,7 @@ long comp_spec_parse(const char *who, const char *spec, long max_size, char type
 int comp_select_init(comp_select_t *s, const char *who, const char *spec, long max_size)
 {
     char types[2];
-    long size = comp_spec_parse(who, spec, max_size, types);
+    long size = comp_spec_parse(who, spec ? spec : "", max_size, types);
     if (size < 0) return (int)size;
     s->in_type = types[0];
     s->out_type = types[1];
@@ -87,6 +101,28 @@ int comp_typed_pin(int comp_id, char t, hal_pin_dir_t dir, void **ptr, const cha
     return hal_pin_new(name, types[(unsigned char)t], dir, ptr, comp_id);
 }
 
+/* Creates the pins listed in defs as <prefix><suffix>, storing each pointer in inst at its offset
+ * and the pin's start value; returns 0 or the first HAL error. */
+int comp_pin_table(int comp_id, void *inst, const comp_pin_def_t *defs, int n, const char *prefix)
+{
+    char name[HAL_NAME_LEN + 1];
+    for (int i = 0; i < n; i++) {
+        void **ptr = (void **)((char *)inst + defs[i].offset);
+        rtapi_snprintf(name, sizeof(name), "%s%s", prefix, defs[i].suffix);
+        int r = hal_pin_new(name, defs[i].type, defs[i].dir, ptr, comp_id);
+        if (r)
+            return r;
+        switch (defs[i].type) {
+        case HAL_BIT: *(hal_bit_t *)*ptr = defs[i].start != 0; break;
+        case HAL_FLOAT: *(hal_float_t *)*ptr = defs[i].start; break;
+        case HAL_S32: *(hal_s32_t *)*ptr = (hal_s32_t)defs[i].start; break;
+        case HAL_U32: *(hal_u32_t *)*ptr = (hal_u32_t)defs[i].start; break;
+        default: break;
+        }
+    }
+    return 0;
+}
+
 /* Number of leading non-empty strings in a string-array module argument. */
 int comp_count_args(char *const args[], int max)
 {
@@ -94,6 +130,82 @@ int comp_count_args(char *const args[], int max)
     while (n < max && args[n] && args[n][0])
         n++;
     return n;
+}
+
+/* One past the last non-empty string of a string-array module argument (empty ones before it count). */
+int comp_last_arg(char *const args[], int max)
+{
+    int n = max;
+    while (n > 0 && !(args[n - 1] && args[n - 1][0]))
+        n--;
+    return n;
+}
+
+/* Check one names= entry: not empty, no blanks or control characters; logs and returns -EINVAL. */
+int comp_name_check(const char *who, int index, const char *name)
+{
+    if (!name || !name[0]) {
+        rtapi_print_msg(RTAPI_MSG_ERR, "%s: ERROR: names[%d] is invalid (empty string)\n", who, index);
+        return -EINVAL;
+    }
+    for (const char *p = name; *p; p++) {
+        if ((unsigned char)*p <= ' ' || *p == 0x7f) {
+            rtapi_print_msg(RTAPI_MSG_ERR, "%s: ERROR: names[%d] \"%s\" contains a blank or "
+                            "control character\n", who, index, name);
+            return -EINVAL;
+        }
+    }
+    if (strlen(name) > HAL_NAME_LEN) {
+        rtapi_print_msg(RTAPI_MSG_ERR, "%s: ERROR: names[%d] \"%s\" is too long (at most %d "
+                        "characters)\n", who, index, name, HAL_NAME_LEN);
+        return -EINVAL;
+    }
+    return 0;
+}
+
+/* Number of names= entries (an empty names= is none); an empty or bad entry gives -EINVAL. */
+int comp_names_count(const char *who, char *const names[], int max)
+{
+    int n = max;
+    while (n > 0 && !names[n - 1])
+        n--;
+    if (n == 1 && !names[0][0])
+        return 0;
+    for (int i = 0; i < n; i++)
+        if (comp_name_check(who, i, names[i]) < 0)
+            return -EINVAL;
+    return n;
+}
+
+/* Channels of a num_chan=/names= module (num_chan 0 means not given); logs and returns -EINVAL. */
+int comp_chan_count(const comp_chan_spec_t *spec, int num_chan, char *const names[])
+{
+    int n = comp_names_count(spec->who, names, spec->max_chan);
+    if (n < 0)
+        return n;
+    if (num_chan && n) {
+        rtapi_print_msg(RTAPI_MSG_ERR, "num_chan= and names= are mutually exclusive\n");
+        return -EINVAL;
+    }
+    if (n)
+        return n;
+    if (num_chan == 0)
+        return spec->default_chan;
+    if (num_chan < 0 || num_chan > spec->max_chan) {
+        rtapi_print_msg(RTAPI_MSG_ERR, "%s: ERROR: invalid number of channels: %d\n",
+                        spec->who, num_chan);
+        return -EINVAL;
+    }
+    return num_chan;
+}
+
+/* Prefix of channel i: its names= entry, else <prefix>.<i>. */
+void comp_chan_name(const comp_chan_spec_t *spec, char *const names[], int i, char *buf, size_t len)
+{
+    if (names[0] && names[0][0])
+        rtapi_snprintf(buf, len, "%s", names[i]);
+    else
+        rtapi_snprintf(buf, len, "%s.%d", spec->prefix, i);
 }
 
 /* hal_init the component, make instances 0..count-1, then hal_ready; exit HAL on failure. */
@@ -104,6 +216,63 @@ int comp_setup(const char *name, int count, comp_make_fn make)
     if (comp_args_id < 0) return comp_args_id;
     for (int i = 0; i < count && r == 0; i++)
         r = make(comp_args_id, i);
+    if (r) {
+        hal_exit(comp_args_id);
+        return r;
+    }
+    hal_ready(comp_args_id);
+    return 0;
+}
+
+/* Instances of a count=/names= module (halcompile's rules): each name, or count (default when 0)
+ * prefixes <prefix_base>.<i>. Bad combinations and names are logged; returns 0 or -EINVAL. */
+int comp_make_named(int comp_id, const char *prefix_base, int count, const char *names,
+                    int default_count, comp_named_make_fn make)
+{
+    char buf[HAL_NAME_LEN + 1];
+    int r = 0, i = 0;
+    if (count && names && names[0]) {
+        rtapi_print_msg(RTAPI_MSG_ERR, "%s: ERROR: count= and names= are mutually exclusive\n", prefix_base);
+        return -EINVAL;
+    }
+    if (count < 0) {
+        rtapi_print_msg(RTAPI_MSG_ERR, "%s: ERROR: count=%d: the count must not be negative\n", prefix_base,
+                        count);
+        return -EINVAL;
+    }
+    if (!names || !names[0]) {
+        for (i = 0; i < (count ? count : default_count) && r == 0; i++) {
+            rtapi_snprintf(buf, sizeof(buf), "%s.%d", prefix_base, i);
+            r = make(comp_id, i, buf);
+        }
+        return r;
+    }
+    for (const char *p = names; r == 0; i++) {
+        const char *end = strchr(p, ',');
+        size_t len = end ? (size_t)(end - p) : strlen(p);
+        if (len > HAL_NAME_LEN) {
+            rtapi_print_msg(RTAPI_MSG_ERR, "%s: ERROR: names: \"%.*s\" too long\n", prefix_base, (int)len, p);
+            return -EINVAL;
+        }
+        memcpy(buf, p, len);
+        buf[len] = '\0';
+        r = comp_name_check(prefix_base, i, buf);
+        if (r == 0)
+            r = make(comp_id, i, buf);
+        if (!end)
+            break;
+        p = end + 1;
+    }
+    return r;
+}
+
+/* hal_init comp, make its count=/names= instances, then hal_ready; exit HAL on failure. */
+int comp_setup_named(const char *comp, const char *prefix_base, int count, const char *names,
+                     int default_count, comp_named_make_fn make)
+{
+    comp_args_id = hal_init(comp);
+    if (comp_args_id < 0) return comp_args_id;
+    int r = comp_make_named(comp_args_id, prefix_base, count, names, default_count, make);
     if (r) {
         hal_exit(comp_args_id);
         return r;

@@ -20,8 +20,28 @@ typedef struct {
     int size, nsel;
 } comp_select_t;
 
+/* How a num_chan=/names= module counts and names its channels. */
+typedef struct {
+    const char *who;    /* message prefix, e.g. "ENCODER" */
+    const char *prefix; /* instance prefix without names=, e.g. "encoder" gives encoder.0 */
+    int max_chan;       /* capacity of the names= array and largest num_chan */
+    int default_chan;   /* channels when neither argument is given (or num_chan=0) */
+} comp_chan_spec_t;
+
+/* One pin of a table-driven module: name suffix, type, direction, where its pointer lives
+ * (offset in the instance struct) and the value it starts with. */
+typedef struct {
+    const char *suffix;
+    hal_type_t type;
+    hal_pin_dir_t dir;
+    size_t offset;
+    double start;
+} comp_pin_def_t;
+
 /* Creates the pins and funct of instance i; returns 0 or a negative errno. */
 typedef int (*comp_make_fn)(int comp_id, int i);
+/* Creates the pins and funct of instance i named prefix; returns 0 or a negative errno. */
+typedef int (*comp_named_make_fn)(int comp_id, int i, const char *prefix);
 
 /* Value of type letter t as a double. */
 static inline double comp_value_read(const comp_value_t *v, char t)
@@ -58,6 +78,46 @@ static inline void comp_value_write(comp_value_t *v, char t, double x)
     }
 }
 
+/* Float to an integer range: NaN gives 0, outside [lo, hi] clamps, inside truncates toward zero. */
+static inline double comp_float_to_range(double x, double lo, double hi)
+{
+    if (x != x) return 0.0;
+    if (x < lo) return lo;
+    if (x > hi) return hi;
+    return x < 0 ? -__builtin_floor(-x) : __builtin_floor(x);
+}
+
+/* Copy src (type letter from) into dst (type letter to) with mux_generic's conversions. */
+static inline void comp_value_convert(comp_value_t *dst, char to, const comp_value_t *src, char from)
+{
+    if (from == to) {
+        *dst = *src;
+        return;
+    }
+    switch (from) {
+    case 'b':
+        if (to == 'f') dst->f = src->b ? 1.0 : 0.0;
+        else if (to == 's') dst->s = src->b ? 1 : 0;
+        else dst->u = src->b ? 1 : 0;
+        return;
+    case 'f':
+        if (to == 'b') dst->b = src->f > 2e-7 || src->f < -2e-7;
+        else if (to == 's') dst->s = (hal_s32_t)comp_float_to_range(src->f, -2147483648.0, 2147483647.0);
+        else dst->u = (hal_u32_t)comp_float_to_range(src->f, 0.0, 4294967295.0);
+        return;
+    case 's':
+        if (to == 'b') dst->b = src->s != 0;
+        else if (to == 'f') dst->f = src->s;
+        else dst->u = src->s < 0 ? 0 : (hal_u32_t)src->s;
+        return;
+    default:
+        if (to == 'b') dst->b = src->u != 0;
+        else if (to == 'f') dst->f = src->u;
+        else dst->s = src->u > 2147483647u ? 2147483647 : (hal_s32_t)src->u;
+        return;
+    }
+}
+
 /* Selected index: sel-int plus the weighted sel-bit pins. */
 static inline unsigned comp_select_read(const comp_select_t *s)
 {
@@ -70,13 +130,22 @@ static inline unsigned comp_select_read(const comp_select_t *s)
 
 const char *comp_type_word(char c);
 int comp_sel_bits(int size);
-long comp_spec_size(const char *spec, long max_size);
 long comp_spec_parse(const char *who, const char *spec, long max_size, char types[2]);
 int comp_select_init(comp_select_t *s, const char *who, const char *spec, long max_size);
 int comp_select_pins(comp_select_t *s, int comp_id, const char *prefix);
 int comp_typed_pin(int comp_id, char t, hal_pin_dir_t dir, void **ptr, const char *name);
 int comp_count_args(char *const args[], int max);
+int comp_last_arg(char *const args[], int max);
+int comp_name_check(const char *who, int index, const char *name);
+int comp_names_count(const char *who, char *const names[], int max);
+int comp_chan_count(const comp_chan_spec_t *spec, int num_chan, char *const names[]);
+void comp_chan_name(const comp_chan_spec_t *spec, char *const names[], int i, char *buf, size_t len);
 int comp_setup(const char *name, int count, comp_make_fn make);
+int comp_pin_table(int comp_id, void *inst, const comp_pin_def_t *defs, int n, const char *prefix);
+int comp_make_named(int comp_id, const char *prefix_base, int count, const char *names,
+                    int default_count, comp_named_make_fn make);
+int comp_setup_named(const char *comp, const char *prefix_base, int count, const char *names,
+                     int default_count, comp_named_make_fn make);
 void comp_teardown(void);
 
 #endif

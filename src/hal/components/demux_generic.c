@@ -19,19 +19,34 @@ RTAPI_MP_ARRAY_STRING(config, DEMUX_MAX, "demux specs: in type, out type, size (
 /* State of one demultiplexer. */
 typedef struct {
     comp_select_t sel;
+    hal_bit_t *suppress;
+    hal_u32_t *debounce_us;
     comp_value_t *in;
     comp_value_t **out;
+    hal_u32_t elapsed;  /* microseconds the new selection has been waiting */
+    hal_u32_t selected; /* selection in effect */
 } demux_t;
 
-/* Funct of one demultiplexer: the selected output follows the input, the others are 0. */
+/* Funct of one demultiplexer: debounce the selection; the selected output follows the input, the others are 0. */
 static void demux_funct(void *arg, long period)
 {
     demux_t *m = arg;
     unsigned sel = comp_select_read(&m->sel);
-    double x = comp_value_read(m->in, m->sel.in_type);
-    (void)period;
-    for (int i = 0; i < m->sel.size; i++)
-        comp_value_write(m->out[i], m->sel.out_type, (unsigned)i == sel ? x : 0.0);
+    static const comp_value_t zero;
+    if (*m->suppress && sel == 0)
+        return;
+    if (sel != m->selected && m->elapsed < *m->debounce_us) {
+        m->elapsed += (hal_u32_t)(period / 1000);
+        return;
+    }
+    m->selected = sel;
+    m->elapsed = 0;
+    for (int i = 0; i < m->sel.size; i++) {
+        if ((unsigned)i == sel)
+            comp_value_convert(m->out[i], m->sel.out_type, m->in, m->sel.in_type);
+        else
+            comp_value_convert(m->out[i], m->sel.out_type, &zero, m->sel.out_type);
+    }
 }
 
 /* Create the select pins, the input pin and the funct of demux n. */
@@ -41,6 +56,10 @@ static int demux_control(int comp_id, demux_t *m, int n)
     int r;
     rtapi_snprintf(name, sizeof(name), "demux-gen.%02d", n);
     r = comp_select_pins(&m->sel, comp_id, name);
+    if (r == 0) r = hal_pin_bit_newf(HAL_IN, &m->suppress, comp_id, "demux-gen.%02d.suppress-no-input", n);
+    if (r == 0) r = hal_pin_u32_newf(HAL_IN, &m->debounce_us, comp_id, "demux-gen.%02d.debounce-us", n);
+    if (r == 0) r = hal_param_u32_newf(HAL_RO, &m->elapsed, comp_id, "demux-gen.%02d.elapsed", n);
+    if (r == 0) r = hal_param_u32_newf(HAL_RO, &m->selected, comp_id, "demux-gen.%02d.selected", n);
     if (r == 0) {
         rtapi_snprintf(name, sizeof(name), "demux-gen.%02d.in-%s", n, comp_type_word(m->sel.in_type));
         r = comp_typed_pin(comp_id, m->sel.in_type, HAL_IN, (void **)&m->in, name);
@@ -60,7 +79,7 @@ static int demux_make(int comp_id, int n)
     int r;
     if (!m) return -ENOMEM;
     memset(m, 0, sizeof(*m));
-    r = comp_select_init(&m->sel, "DEMUX_GENERIC", config[n], DEMUX_MAX_SIZE);
+    r = comp_select_init(&m->sel, "demux_generic", config[n], DEMUX_MAX_SIZE);
     if (r != 0) return r;
     m->out = hal_malloc(sizeof(*m->out) * m->sel.size);
     if (!m->out) return -ENOMEM;
@@ -76,10 +95,9 @@ static int demux_make(int comp_id, int n)
 /* Create every configured demultiplexer. */
 int rtapi_app_main(void)
 {
-    int n = comp_count_args(config, DEMUX_MAX);
+    int n = comp_last_arg(config, DEMUX_MAX);
     if (n == 0) {
-        rtapi_print_msg(RTAPI_MSG_ERR,
-                        "DEMUX_GENERIC: ERROR: no config given (e.g. config=\"bf8,us4\")\n");
+        rtapi_print_msg(RTAPI_MSG_ERR, "The demux_generic component requires at least one valid format string\n");
         return -EINVAL;
     }
     return comp_setup("demux_generic", n, demux_make);

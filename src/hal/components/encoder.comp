@@ -35,6 +35,7 @@ variable long long prev_edge_ns;
 variable long long gap_ns;
 variable int edge_dir;
 option rtapi_app no;
+include "comp_args.h";
 include <rtapi_math.h>;
 license "GPL";
 author "OpenEMC";
@@ -155,34 +156,18 @@ static void enc_capture_position(void *arg, long period)
     FOR_ALL_INSTS() enc_capture_one(__comp_inst, period);
 }
 
-/* Number of names= entries given. */
-static int enc_name_count(void)
-{
-    int n = 0;
-    while (n < ENC_MAX_CHAN && names[n] && names[n][0]) n++;
-    return n;
-}
-
 /* Create the channels and the two shared functs. */
 int rtapi_app_main(void)
 {
-    int i, r = 0, n = enc_name_count();
+    static const comp_chan_spec_t spec = { "ENCODER", "encoder", ENC_MAX_CHAN, 3 };
+    int i, r = 0, n = comp_chan_count(&spec, num_chan, names);
     char buf[HAL_NAME_LEN + 1];
-    if (num_chan && n) {
-        rtapi_print_msg(RTAPI_MSG_ERR, "num_chan= and names= are mutually exclusive\n");
-        return -EINVAL;
-    }
-    if (!num_chan && !n) num_chan = 3;
-    if (n) num_chan = n;
-    if (num_chan < 1 || num_chan > ENC_MAX_CHAN) {
-        rtapi_print_msg(RTAPI_MSG_ERR, "ENCODER: ERROR: invalid num_chan: %d\n", num_chan);
-        return -EINVAL;
-    }
+    if (n < 0)
+        return n;
     comp_id = hal_init("encoder");
     if (comp_id < 0) return comp_id;
-    for (i = 0; i < num_chan && r == 0; i++) {
-        if (n) rtapi_snprintf(buf, sizeof(buf), "%s", names[i]);
-        else rtapi_snprintf(buf, sizeof(buf), "encoder.%d", i);
+    for (i = 0; i < n && r == 0; i++) {
+        comp_chan_name(&spec, names, i, buf, sizeof(buf));
         r = export(buf, i);
     }
     if (r == 0) r = hal_export_funct("encoder.update-counters", enc_update_counters, 0, 0, 0, comp_id);

@@ -1,4 +1,4 @@
-/* enum.c: decode an integer into one bit per named value, or encode such bits into an integer. */
+/* enum.c: decode an integer into one bit per named state, or encode such bits into an integer. */
 #include "rtapi.h"
 #include "rtapi_app.h"
 #include "rtapi_string.h"
@@ -8,150 +8,159 @@
 
 MODULE_LICENSE("GPL");
 MODULE_AUTHOR("OpenEMC");
-MODULE_DESCRIPTION("Enumerations: enums=D;v0;v1;;v3,E;a;b names=x,y");
+MODULE_DESCRIPTION("Enumerations: enums=D;s0;s1;;s3,E;a;b [names=x,y]");
 
-#define ENUM_MAX_CHAN 16
-#define ENUM_MAX_VALUES 64
+#define ENUM_MAX_CHAN 256
 #define ENUM_LABEL_LEN 40
 
 static char *enums[ENUM_MAX_CHAN];
-RTAPI_MP_ARRAY_STRING(enums, ENUM_MAX_CHAN, "per channel: D or E, then ;-separated labels");
+RTAPI_MP_ARRAY_STRING(enums, ENUM_MAX_CHAN, "per instance: E (encode) or D (decode), then ;-separated states");
 static char *names[ENUM_MAX_CHAN];
-RTAPI_MP_ARRAY_STRING(names, ENUM_MAX_CHAN, "channel names (default enum.N)");
+RTAPI_MP_ARRAY_STRING(names, ENUM_MAX_CHAN, "instance names (default enum-encode.NN / enum-decode.NN)");
 
-/* Pins of one named value. */
+/* Pins of one named state. */
 typedef struct {
-    hal_bit_t *bit;
-    hal_u32_t *val;
-} enum_value_t;
+    hal_bit_t *bit;   /* <state>-out (decode) or <state>-in (encode) */
+    hal_u32_t *val;   /* <state>-val, preset to the field position */
+} enum_state_t;
 
-/* One enumeration channel. */
+/* One instance. */
 typedef struct {
-    hal_u32_t *number;
-    enum_value_t v[ENUM_MAX_VALUES];
+    hal_u32_t *number;    /* input (decode) or output (encode) */
+    enum_state_t *s;      /* the named states in field order */
     int count;
-} enum_chan_t;
+} enum_inst_t;
 
 static int comp_id;
 
-/* Funct <prefix>.decode: set each value's bit when the input equals its number. */
+/* Funct of a decoder: every state whose value equals the input is TRUE. */
 static void enum_decode(void *arg, long period)
 {
-    enum_chan_t *c = arg;
+    enum_inst_t *c = arg;
     (void)period;
     for (int i = 0; i < c->count; i++)
-        if (c->v[i].bit) *c->v[i].bit = *c->v[i].val == *c->number;
+        *c->s[i].bit = *c->s[i].val == *c->number;
 }
 
-/* Funct <prefix>.encode: output the number of the first value whose bit is set, else 0. */
+/* Funct of an encoder: the value of the last TRUE state, 0 when none is. */
 static void enum_encode(void *arg, long period)
 {
-    enum_chan_t *c = arg;
+    enum_inst_t *c = arg;
+    hal_u32_t out = 0;
     (void)period;
-    for (int i = 0; i < c->count; i++) {
-        if (c->v[i].bit && *c->v[i].bit) {
-            *c->number = *c->v[i].val;
-            return;
-        }
-    }
-    *c->number = 0;
+    for (int i = 0; i < c->count; i++)
+        if (*c->s[i].bit) out = *c->s[i].val;
+    *c->number = out;
 }
 
-/* Create the bit and number pins of value i named by label[0..len). */
-static int enum_value(enum_chan_t *c, int i, const char *prefix, const char *label, int len,
-                      int decode)
-{
-    int r = hal_pin_bit_newf(decode ? HAL_OUT : HAL_IN, &c->v[i].bit, comp_id, "%s.%.*s-%s",
-                             prefix, len, label, decode ? "out" : "in");
-    if (r == 0)
-        r = hal_pin_u32_newf(HAL_IN, &c->v[i].val, comp_id, "%s.%.*s-val", prefix, len, label);
-    if (r == 0) *c->v[i].val = i;
-    return r;
-}
-
-/* Create the value pins listed after the mode letter; returns 0 or a negative errno. */
-static int enum_values(enum_chan_t *c, const char *spec, const char *prefix, int decode)
+/* Field k of the states after the mode letter: *len characters at the returned pointer, or NULL
+ * past the last field (a trailing empty field is ignored). */
+static const char *enum_field(const char *spec, int k, int *len)
 {
     const char *p = spec + 1;
-    int r = 0, named = 0;
-    while (*p == ';' && r == 0) {
-        const char *label = ++p;
+    for (int i = 0; *p == ';'; i++) {
+        const char *f = ++p;
         while (*p && *p != ';') p++;
-        if (c->count >= ENUM_MAX_VALUES) {
-            rtapi_print_msg(RTAPI_MSG_ERR, "ENUM: ERROR: '%s' has more than %d values\n", spec,
-                            ENUM_MAX_VALUES);
-            return -EINVAL;
+        if (!*p && p == f) return NULL;
+        if (i == k) {
+            *len = (int)(p - f);
+            return f;
         }
-        if (p - label > ENUM_LABEL_LEN) {
-            rtapi_print_msg(RTAPI_MSG_ERR, "ENUM: ERROR: label '%.*s' is too long\n",
-                            (int)(p - label), label);
-            return -EINVAL;
-        }
-        if (p > label) {
-            r = enum_value(c, c->count, prefix, label, (int)(p - label), decode);
-            named++;
-        }
-        c->count++;
     }
-    if (r == 0 && !named) {
-        rtapi_print_msg(RTAPI_MSG_ERR, "ENUM: ERROR: '%s' names no values\n", spec);
-        return -EINVAL;
-    }
-    return r;
+    return NULL;
 }
 
-/* Create channel n from its spec. */
-static int enum_make(const char *spec, const char *prefix)
+/* Number of named states in spec and checks of each name; negative errno on a bad one. */
+static int enum_count(const char *spec)
 {
-    char fname[HAL_NAME_LEN + 1];
-    int decode = spec[0] == 'D' || spec[0] == 'd';
-    enum_chan_t *c;
-    int r;
-    if ((!decode && spec[0] != 'E' && spec[0] != 'e') || spec[1] != ';') {
-        rtapi_print_msg(RTAPI_MSG_ERR, "ENUM: ERROR: bad spec '%s' (must start with D; or E;)\n",
-                        spec);
-        return -EINVAL;
+    int len, n = 0;
+    const char *f;
+    for (int k = 0; (f = enum_field(spec, k, &len)) != NULL; k++) {
+        if (len > ENUM_LABEL_LEN) {
+            rtapi_print_msg(RTAPI_MSG_ERR, "ENUM: ERROR: state name '%.*s' is longer than %d\n", len, f,
+                            ENUM_LABEL_LEN);
+            return -EINVAL;
+        }
+        n += len > 0;
     }
-    c = hal_malloc(sizeof(*c));
-    if (!c) return -ENOMEM;
-    memset(c, 0, sizeof(*c));
-    r = hal_pin_u32_newf(decode ? HAL_IN : HAL_OUT, &c->number, comp_id, "%s.%s", prefix,
-                         decode ? "input" : "output");
-    if (r == 0) r = enum_values(c, spec, prefix, decode);
-    if (r != 0) return r;
-    rtapi_snprintf(fname, sizeof(fname), "%s.%s", prefix, decode ? "decode" : "encode");
-    return hal_export_funct(fname, decode ? enum_decode : enum_encode, c, 0, 0, comp_id);
-}
-
-/* Number of channels, or -1 when names= does not match enums=. */
-static int enum_channels(void)
-{
-    int n = comp_count_args(enums, ENUM_MAX_CHAN), k = comp_count_args(names, ENUM_MAX_CHAN);
     if (n == 0) {
-        rtapi_print_msg(RTAPI_MSG_ERR, "ENUM: ERROR: no enums= given (e.g. enums=D;a;b;c)\n");
-        return -1;
-    }
-    if (k && k != n) {
-        rtapi_print_msg(RTAPI_MSG_ERR, "ENUM: ERROR: %d names for %d enums\n", k, n);
-        return -1;
+        rtapi_print_msg(RTAPI_MSG_ERR, "ENUM: ERROR: '%s' names no states\n", spec);
+        return -EINVAL;
     }
     return n;
 }
 
-/* Create channel i, named from names= or enum.<i>, in component id. */
+/* Create the pins of every named state; the value of a state is its field position. */
+static int enum_states(enum_inst_t *c, const char *spec, const char *prefix, int decode)
+{
+    int len, r = 0;
+    const char *f;
+    for (int k = 0; r == 0 && (f = enum_field(spec, k, &len)) != NULL; k++) {
+        if (len == 0) continue;
+        enum_state_t *s = &c->s[c->count++];
+        r = hal_pin_bit_newf(decode ? HAL_OUT : HAL_IN, &s->bit, comp_id, "%s.%.*s-%s", prefix, len, f,
+                             decode ? "out" : "in");
+        if (r == 0) r = hal_pin_u32_newf(HAL_IN, &s->val, comp_id, "%s.%.*s-val", prefix, len, f);
+        if (r == 0) *s->val = (hal_u32_t)k;
+    }
+    return r;
+}
+
+/* Create one instance from its spec. */
+static int enum_make(const char *spec, const char *prefix)
+{
+    int decode = spec[0] == 'D' || spec[0] == 'd', n;
+    if ((!decode && spec[0] != 'E' && spec[0] != 'e') || (spec[1] != ';' && spec[1] != '\0')) {
+        rtapi_print_msg(RTAPI_MSG_ERR,
+                        "Each enum string must startwith either E; or D; to define the mode ('%s')\n", spec);
+        return -EINVAL;
+    }
+    n = enum_count(spec);
+    if (n < 0) return n;
+    enum_inst_t *c = hal_malloc(sizeof(*c));
+    enum_state_t *s = hal_malloc(n * sizeof(*s));
+    if (!c || !s) return -ENOMEM;
+    *c = (enum_inst_t){.s = s};
+    int r = hal_pin_u32_newf(decode ? HAL_IN : HAL_OUT, &c->number, comp_id, "%s.%s", prefix,
+                             decode ? "input" : "output");
+    if (r == 0) r = enum_states(c, spec, prefix, decode);
+    if (r == 0) r = hal_export_funct(prefix, decode ? enum_decode : enum_encode, c, 0, 0, comp_id);
+    return r;
+}
+
+/* Number of instances, or -1 after the message when enums= is missing or names= does not match. */
+static int enum_instances(void)
+{
+    int n = comp_count_args(enums, ENUM_MAX_CHAN), k = comp_count_args(names, ENUM_MAX_CHAN);
+    if (n == 0) {
+        rtapi_print_msg(RTAPI_MSG_ERR, "The enum_decode component requires at least one enumeration list\n");
+        return -1;
+    }
+    if (k && k != n) {
+        rtapi_print_msg(RTAPI_MSG_ERR, "Inconsistent number of names and enums\n");
+        return -1;
+    }
+    for (int i = 0; i < k; i++)
+        if (comp_name_check("enum", i, names[i]) < 0) return -1;
+    rtapi_print_msg(RTAPI_MSG_INFO, "making %i instances\n", n);
+    return n;
+}
+
+/* Create instance i, named from names= or enum-encode.NN / enum-decode.NN, in component id. */
 static int enum_instance(int id, int i)
 {
     char prefix[HAL_NAME_LEN + 1];
+    int decode = enums[i][0] == 'D' || enums[i][0] == 'd';
     comp_id = id;
     if (names[0] && names[0][0]) rtapi_snprintf(prefix, sizeof(prefix), "%s", names[i]);
-    else rtapi_snprintf(prefix, sizeof(prefix), "enum.%d", i);
+    else rtapi_snprintf(prefix, sizeof(prefix), "enum-%s.%02d", decode ? "decode" : "encode", i);
     return enum_make(enums[i], prefix);
 }
 
-/* Create every configured channel. */
+/* Create every configured instance. */
 int rtapi_app_main(void)
 {
-    int n = enum_channels();
+    int n = enum_instances();
     if (n < 0) return -EINVAL;
     return comp_setup("enum", n, enum_instance);
 }

@@ -2,7 +2,7 @@ component feedcomp "Scale a value by the ratio of the current velocity to the fe
 pin out float out "The input scaled by vel / feed (or the input itself when disabled)";
 pin in float in "Value to scale, e.g. laser power at full feed rate";
 pin in float vel "Current velocity, e.g. motion.current-vel";
-pin in float feed "Reference feed rate the input applies to";
+param rw float feed "Reference feed rate the input applies to";
 pin in bit enable "TRUE to scale the input; FALSE passes it through";
 function _ "Compute the output";
 license "GPL";

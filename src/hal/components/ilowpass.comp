@@ -1,6 +1,6 @@
 component ilowpass "Low-pass filter with integer input and output";
 pin in s32 in;
-pin out s32 out "floor(value * scale + 0.5)";
+pin out s32 out "floor(value * scale + 0.5) as a 64-bit integer, keeping its low 32 bits (wraps like LinuxCNC)";
 param rw float scale = 1024 "Output scale";
 param rw float gain = 0.5 "Filter gain";
 variable double value;
@@ -11,5 +11,13 @@ author "OpenEMC";
 ;;
 value += (in - value) * gain;
 double o = floor(value * scale + 0.5);
-if (o != o) o = 0.0;  /* NaN gain or scale: report 0 */
-out = o >= 2147483647.0 ? 2147483647 : o <= -2147483648.0 ? (-2147483647 - 1) : (hal_s32_t)o;
+long long wide;
+if (o != o)
+    wide = 0;  /* NaN gain or scale: report 0 */
+else if (o >= 9223372036854775807.0)
+    wide = 9223372036854775807LL;  /* beyond 64 bits: saturate, then wrap like any other value */
+else if (o <= -9223372036854775808.0)
+    wide = -9223372036854775807LL - 1;
+else
+    wide = (long long)o;
+out = (hal_s32_t)(hal_u32_t)(unsigned long long)wide;

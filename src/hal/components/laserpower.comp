@@ -1,53 +1,59 @@
-component laserpower "Scale laser power with the actual feed velocity so each unit of length gets the same energy";
-pin in bit enable "TRUE: scale req-power by velocity; FALSE: output is req-power unchanged";
-pin in float req_power "Requested laser power (for example the spindle speed command)";
-pin in float req_vel "Requested (programmed) feed velocity, for example motion.requested-vel";
-pin in float cur_vel "Actual feed velocity, for example motion.current-vel";
-pin in float min_power = 0 "Least power given while scaling and the laser is on";
-pin in float max_power = 100 "Most power ever given while scaling";
-pin out float output "Laser power to apply";
-function _ "Compute the output power";
-description """
-While enable is TRUE the requested power is multiplied by the ratio of the
-actual to the requested velocity (absolute value of cur-vel divided by
-req-vel), so the laser dims while the machine accelerates or slows down for a
-corner and the burn stays even. The ratio never exceeds 1, so the output never
-goes above the requested power; when req-vel is 0 or less (a dwell, or no feed
-move) the ratio is taken as 1. The result is then limited to min-power ... max-power
-(max-power wins if the two cross). A requested power of 0 or less means the
-laser is off: the output is 0 and min-power does not apply.
-
-While enable is FALSE the output simply follows req-power, without scaling or
-limits.
-""";
+component laserpower "Scale laser power by actual/requested velocity; in vector mode ramp it along a move";
+pin in bit enabled "FALSE turns the laser off (power 0)";
+pin in bit raster_mode "TRUE: command-power is raster-power; FALSE: vector mode";
+pin in float raster_power "Raster power in percent";
+pin in float vector_power "Vector power in percent (for example from an M67 output)";
+pin in float distance_to_go "Distance left in the current move (motion.distance-to-go)";
+pin in float req_velocity "Requested velocity (motion.requested-vel)";
+pin in float cur_velocity "Current velocity (motion.current-vel)";
+pin in float min_power "power at 0 percent";
+pin in float max_power "power at 100 percent and full velocity";
+pin out float vel_scale "|cur-velocity| / |req-velocity|, 0 when either is 0";
+pin out float start_power "Vector power when the current ramp started";
+pin out float start_distance "distance-to-go when the current ramp started";
+pin out float command_power "Commanded power in percent before velocity scaling";
+pin out float power "(max-power - min-power) * vel-scale * command-power / 100 + min-power; 0 when off";
+variable double prev_vector_power;
+variable double prev_distance;
+function _;
 include <rtapi_math.h>;
 license "GPL";
 author "OpenEMC";
-;;
-/* Velocity ratio actual/requested, in 0..1; 1 without a requested velocity. */
-static double velocity_ratio(double requested, double actual)
-{
-    double ratio;
-    if (!(requested > 0)) return 1.0;
-    ratio = fabs(actual) / requested;
-    if (ratio != ratio) return 0.0;  /* NaN velocity: laser off */
-    return ratio > 1.0 ? 1.0 : ratio;
-}
+description """LinuxCNC's laserpower, with its memories kept per instance (LinuxCNC shares them
+between instances). A value counts as zero below 0.00005 in magnitude.
 
-/* Scale the requested power by velocity and limit it; pass it through when disabled. */
+In vector mode a new ramp starts when distance-to-go grows (a new move) or vector-power
+changes by 0.00005 or more: start-power is the previous vector power and start-distance the
+current distance-to-go. command-power then moves from start-power to vector-power as the
+move is used up: start + (vector-power - start) * (1 - distance-to-go / start-distance);
+where LinuxCNC divides 0 by 0 (start-distance 0) the ratio is taken as 0, so command-power
+is vector-power.
+
+power is 0 while enabled is FALSE or command-power is negative (or NaN); NaN or infinite
+velocities give vel-scale 0.""";
+;;
+#define LP_ZERO 0.00005
+
 FUNCTION(_)
 {
-    double power;
-    if (!enable) {
-        output = req_power;
-        return;
+    double req = fabs(req_velocity), cur = fabs(cur_velocity), ratio;
+    vel_scale = (req < LP_ZERO || cur < LP_ZERO) ? 0.0 : cur / req;
+    if (!(vel_scale - vel_scale == 0.0))  /* NaN or infinite velocities scale to 0 */
+        vel_scale = 0.0;
+    if (raster_mode) {
+        command_power = raster_power;
+    } else {
+        if (prev_distance < distance_to_go || fabs(vector_power - prev_vector_power) >= LP_ZERO) {
+            start_power = prev_vector_power;
+            start_distance = distance_to_go;
+        }
+        prev_vector_power = vector_power;
+        prev_distance = distance_to_go;
+        ratio = fabs(start_distance) < LP_ZERO ? 0.0 : distance_to_go / start_distance;
+        command_power = start_power + (vector_power - start_power) * (1.0 - ratio);
     }
-    if (!(req_power > 0)) {
-        output = 0;
-        return;
-    }
-    power = req_power * velocity_ratio(req_vel, cur_vel);
-    if (power < min_power) power = min_power;
-    if (power > max_power) power = max_power;
-    output = power;
+    if (!enabled || !(command_power >= 0))  /* negative or NaN: off */
+        power = 0;
+    else
+        power = (max_power - min_power) * vel_scale * command_power / 100.0 + min_power;
 }

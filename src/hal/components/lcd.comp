@@ -1,8 +1,8 @@
 component lcd "Stream formatted HAL values to a character LCD, one byte per call (Mesa 7i73 LCD port)";
 pin out u32 out "Byte to send to the display this call (connect to the 7i73 lcd pin); 0 when there is nothing to send";
-pin in u32 page_num "Page to show, counting from 0; a page that does not exist blanks the display";
 pin in float contrast "Display contrast, 0 to 1; a change is sent as ESC C and a byte 0..255 at the next refresh";
 param rw u32 decimal_separator = 46 "Character used as the decimal point of f and F conversions (46 is '.')";
+variable hal_u32_t *page_pin;
 variable struct lcd_page *pages;
 variable int n_pages;
 variable int cur_page = -1;
@@ -19,8 +19,9 @@ include <rtapi_math.h>;
 license "GPL";
 author "OpenEMC";
 description """Load with fmt_strings="DISPLAY0,DISPLAY1,..." where each display is PAGE0|PAGE1|...
-Display N has pins lcd.NN.out, lcd.NN.page-num, lcd.NN.contrast, param lcd.NN.decimal-separator
-(NN two digits), and one input pin lcd.NN.page.PP.arg.AA per conversion of page PP. One funct,
+Display N has pins lcd.NN.out, lcd.NN.page_num (u32 IN, with an underscore as in LinuxCNC: the
+page to show counting from 0; a page that does not exist blanks the display), lcd.NN.contrast,
+param lcd.NN.decimal-separator (NN two digits), and one input pin lcd.NN.page.PP.arg.AA per conversion of page PP. One funct,
 lcd, updates every display and may run in a floating-point thread.
 
 The page is sent again and again: the display is cleared (byte 0x1A) before the first refresh of a
@@ -35,7 +36,7 @@ is shown as width asterisks. C is f or F (float pin, precision 6 by default, dec
 decimal-separator), d or i (s32 pin), u, x, X or o (u32 pin, decimal, hex, upper-case hex,
 octal), c (u32 pin sent as a character) or b followed by two characters (bit pin: the first is
 shown when TRUE, the second when FALSE). Values are read when their conversion is reached; halfway values
-round away from zero and a value that rounds to zero shows no minus sign. A new page-num or
+round away from zero and a value that rounds to zero shows no minus sign. A new page_num or
 contrast takes effect at the next refresh. count= and names= are not accepted.""";
 ;;
 #define LCD_MAX_WIDTH 40
@@ -269,7 +270,7 @@ static unsigned char contrast_byte(double c)
 /* Control bytes that begin a refresh: changed contrast, then clear (new page) or home. */
 static void start_refresh(struct __comp_state *__comp_inst)
 {
-    int want = page_num < (hal_u32_t)n_pages ? (int)page_num : n_pages;
+    int want = *page_pin < (hal_u32_t)n_pages ? (int)*page_pin : n_pages;
     buf_len = 0;
     buf_pos = 0;
     double c = contrast == contrast ? contrast : 0.0;  /* NaN counts as 0 */
@@ -377,6 +378,8 @@ static int make_args(struct lcd_page *pg, const char *prefix, int page)
 static int setup_display(struct __comp_state *__comp_inst, char *text, const char *prefix, int no)
 {
     int p, r, err_at = 0;
+    r = hal_pin_u32_newf(HAL_IN, &page_pin, comp_id, "%s.page_num", prefix);
+    if (r) return r;
     char *c;
     n_pages = 1;
     for (c = text; *c; c++) n_pages += *c == '|';

@@ -6,9 +6,9 @@ pin in bit backtrack_enable = TRUE "Remove offsets by retracing the recorded way
 pin in float epsilon = 0.0005 "Distance from zero within which every offset counts as removed";
 pin in float waypoint_threshold = 0.02 "Smallest move of any joint recorded as a new waypoint; also how close a waypoint must be approached while backtracking";
 pin in float waypoint_sample_secs = 0.02 "Shortest time between two recorded waypoints";
-pin out bit warning "TRUE after the waypoint store overflowed, or while offsets are applied but apply-offsets is FALSE";
-pin out bit active "TRUE from enabling until the offsets are removed again";
-pin out bit backtracking "TRUE while offsets are being removed";
+pin out bit warning "TRUE while offsets are applied but apply-offsets is FALSE";
+pin out bit offset_applied "TRUE from enabling until the offsets are removed again";
+pin out bit waypoint_limit "TRUE after the waypoint store ran full (offsets frozen) until the offsets are removed";
 pin out s32 waypoint_ct "Number of waypoints recorded";
 pin out s32 waypoint_percent_used "Fill level of the waypoint store in percent";
 pin in float offset_in_#[16 : personality] "Requested offset of joint #";
@@ -51,7 +51,10 @@ at no more than offset-vel-N and offset-accel-N. While offsets move, a waypoint 
 offsets of all joints) is recorded whenever waypoint-sample-secs have passed and some
 joint moved more than waypoint-threshold since the last waypoint. When the store
 (1000 waypoints; 5 while dbg-waypoint-limit-test is TRUE) is full, the offsets stop
-where they are and warning is set until the offsets are removed.
+where they are and waypoint-limit is set until the offsets are removed (an enabling
+input must be dropped to remove them). offset-applied is TRUE from enabling until the
+offsets are removed again; warning is TRUE while offsets are applied but apply-offsets
+is FALSE.
 
 When the enable condition goes away the offsets are removed: with backtrack-enable
 they retrace the waypoints in reverse order (a waypoint counts as passed once every
@@ -236,9 +239,9 @@ static void publish_status(struct __comp_state *__comp_inst)
     int j, limit = dbg_waypoint_limit_test ? MOVEOFF_TEST_WAYPOINTS : MOVEOFF_MAX_WAYPOINTS;
     for (j = 0; j < personality; j++)
         offset_current(j) = cur[j];
-    active = state != ST_IDLE;
-    backtracking = state == ST_BACKTRACK || state == ST_RETURN;
-    warning = overflow || (state != ST_IDLE && !apply_offsets);
+    offset_applied = state != ST_IDLE;
+    waypoint_limit = overflow;
+    warning = state != ST_IDLE && !apply_offsets;
     waypoint_ct = n_wp;
     waypoint_percent_used = (100 * n_wp) / limit;
     dbg_state = state;

@@ -23,30 +23,26 @@ typedef struct {
     hal_u32_t *debounce_us;
     comp_value_t **in;
     comp_value_t *out;
-    hal_u32_t elapsed;
-    hal_u32_t selected;
-    unsigned pending;
-    long long stable_ns;
+    hal_u32_t elapsed;  /* microseconds the new selection has been waiting */
+    hal_u32_t selected; /* selection in effect */
 } muxg_t;
 
-/* Funct of one multiplexer: pick the (debounced) selection and copy it to out. */
+/* Funct of one multiplexer: debounce the selection, then copy the chosen input to out. */
 static void muxg_funct(void *arg, long period)
 {
     muxg_t *m = arg;
     unsigned sel = comp_select_read(&m->sel);
-    if (sel != m->pending) {
-        m->pending = sel;
-        m->stable_ns = 0;
-    } else {
-        m->stable_ns += period;
+    if (*m->suppress && sel == 0)
+        return;
+    if (sel != m->selected && m->elapsed < *m->debounce_us) {
+        m->elapsed += (hal_u32_t)(period / 1000);
+        return;
     }
-    m->elapsed = (hal_u32_t)(m->stable_ns / 1000);
-    if (m->stable_ns / 1000 < (long long)*m->debounce_us)
-        return;
-    if (sel >= (unsigned)m->sel.size || (sel == 0 && *m->suppress))
-        return;
     m->selected = sel;
-    comp_value_write(m->out, m->sel.out_type, comp_value_read(m->in[sel], m->sel.in_type));
+    m->elapsed = 0;
+    if (sel >= (unsigned)m->sel.size)
+        sel = m->sel.size - 1;
+    comp_value_convert(m->out, m->sel.out_type, m->in[sel], m->sel.in_type);
 }
 
 /* Create the select and control pins and params of mux n. */
@@ -71,7 +67,7 @@ static int muxg_make(int comp_id, int n)
     muxg_t *m = hal_malloc(sizeof(*m));
     if (!m) return -ENOMEM;
     memset(m, 0, sizeof(*m));
-    int r = comp_select_init(&m->sel, "MUX_GENERIC", config[n], MUXG_MAX_SIZE);
+    int r = comp_select_init(&m->sel, "mux_generic", config[n], MUXG_MAX_SIZE);
     if (r != 0) return r;
     m->in = hal_malloc(sizeof(*m->in) * m->sel.size);
     if (!m->in) return -ENOMEM;
@@ -91,9 +87,9 @@ static int muxg_make(int comp_id, int n)
 /* Create every configured multiplexer. */
 int rtapi_app_main(void)
 {
-    int n = comp_count_args(config, MUXG_MAX_MUX);
+    int n = comp_last_arg(config, MUXG_MAX_MUX);
     if (n == 0) {
-        rtapi_print_msg(RTAPI_MSG_ERR, "MUX_GENERIC: ERROR: no config given (e.g. config=\"bb8,fu12\")\n");
+        rtapi_print_msg(RTAPI_MSG_ERR, "The mux_generic component requires at least one valid format string\n");
         return -EINVAL;
     }
     return comp_setup("mux_generic", n, muxg_make);

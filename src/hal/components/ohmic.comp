@@ -3,9 +3,9 @@ pin in float thcad-0-volt-freq "THCAD output frequency at 0 V, in Hz, from its c
 pin in float thcad-max-volt-freq "THCAD output frequency at full scale, in Hz, from its calibration label";
 pin in float thcad-divide = 32 "Frequency divider selected on the THCAD (1, 32, 64 or 128)";
 pin in float thcad-fullscale = 5 "THCAD full-scale input voltage (5, 10 or 300)";
-pin in float volt-divider = 1 "Ratio of any external voltage divider in front of the THCAD";
-pin in float ohmic-threshold = 18 "Sensed voltage at or above which contact is reported";
-pin in float ohmic-low = 5 "Sensed voltage below which contact is released";
+pin in float volt-divider = 4.9 "Ratio of any external voltage divider in front of the THCAD";
+pin in float ohmic-threshold = 22 "Sensed voltage at or above which contact is reported";
+pin in float ohmic-low = 21 "Sensed voltage below which contact is released";
 pin in float velocity-in "Divided THCAD frequency in Hz, e.g. a Mesa encoder velocity with scale 1";
 pin in bit is-probing "TRUE while probing; ohmic-on stays FALSE otherwise";
 pin out float ohmic-volts "Sensed voltage";

@@ -58,6 +58,7 @@ variable double tune_time;
 variable double tune_max;
 variable double tune_min;
 option rtapi_app no;
+include "comp_args.h";
 option post_export yes;
 function do_pid_calcs "Run one controller step";
 include <rtapi_math.h>;
@@ -209,34 +210,18 @@ FUNCTION(do_pid_calcs)
     pid_debug_out(__comp_inst);
 }
 
-/* Number of names= entries given. */
-static int pid_name_count(void)
-{
-    int n = 0;
-    while (n < PID_MAX_CHAN && names[n] && names[n][0]) n++;
-    return n;
-}
-
 /* Create num_chan (or one per name) controllers. */
 int rtapi_app_main(void)
 {
-    int i, r = 0, n = pid_name_count();
+    static const comp_chan_spec_t spec = { "PID", "pid", PID_MAX_CHAN, 3 };
+    int i, r = 0, n = comp_chan_count(&spec, num_chan, names);
     char buf[HAL_NAME_LEN + 1];
-    if (num_chan && n) {
-        rtapi_print_msg(RTAPI_MSG_ERR, "num_chan= and names= are mutually exclusive\n");
-        return -EINVAL;
-    }
-    if (!num_chan && !n) num_chan = 3;
-    if (n) num_chan = n;
-    if (num_chan < 1 || num_chan > PID_MAX_CHAN) {
-        rtapi_print_msg(RTAPI_MSG_ERR, "PID: ERROR: invalid num_chan: %d\n", num_chan);
-        return -EINVAL;
-    }
+    if (n < 0)
+        return n;
     comp_id = hal_init("pid");
     if (comp_id < 0) return comp_id;
-    for (i = 0; i < num_chan && r == 0; i++) {
-        if (n) rtapi_snprintf(buf, sizeof(buf), "%s", names[i]);
-        else rtapi_snprintf(buf, sizeof(buf), "pid.%d", i);
+    for (i = 0; i < n && r == 0; i++) {
+        comp_chan_name(&spec, names, i, buf, sizeof(buf));
         r = export(buf, i, debug ? 1 : 0);
     }
     if (r) {

@@ -1,308 +1,323 @@
-component plasmac "Plasma cutting controller: torch height, arc supervision and torch height control through external offsets";
-pin in float arc_fail_delay = 3.0 "Seconds to wait for a valid arc after the torch is switched on";
-pin in s32 arc_max_starts = 3 "Torch starts tried before an arc failure pauses the program";
-pin in bit arc_ok_in "Arc OK input from the plasma source (modes 1 and 2)";
-pin in float arc_ok_high = 250.0 "Arc voltage above which the arc is not OK (mode 0)";
-pin in float arc_ok_low = 60.0 "Arc voltage below which the arc is not OK (mode 0)";
-pin in float arc_restart_delay = 1.0 "Seconds between a failed start and the next torch start";
-pin in float arc_voltage_in "Raw arc voltage sensor value (modes 0 and 1)";
-pin in float arc_voltage_offset "Raw sensor value that reads as 0 volts";
-pin in float arc_voltage_scale = 1.0 "Volts per raw sensor unit";
-pin in float axis_x_max_limit "X axis maximum limit (machine units)";
-pin in float axis_x_min_limit "X axis minimum limit (machine units)";
-pin in float axis_x_position "Current X position, used for cut length and skip-IHS distance";
-pin in float axis_y_max_limit "Y axis maximum limit (machine units)";
-pin in float axis_y_min_limit "Y axis minimum limit (machine units)";
-pin in float axis_y_position "Current Y position, used for cut length and skip-IHS distance";
-pin in float axis_z_max_limit "Z axis maximum limit (machine units)";
-pin in float axis_z_min_limit "Z axis minimum limit (machine units); probing stops there";
-pin in float axis_z_position "Current Z position including the offset this component applies";
-pin in bit breakaway "Torch breakaway switch; TRUE during a cut pauses the program";
+component plasmac "Plasma cutting controller for QtPlasmaC: probing, torch start, pierce, arc voltage torch height control, pause, recovery and consumable change through external offsets";
+pin out float adaptive_feed "To motion.adaptive-feed: feed factor (feed reduction, paused motion; negative runs backwards)";
+pin in float arc_fail_delay "Seconds to wait for arc OK after the torch is switched on";
+pin in float arc_lost_delay "Seconds arc OK may be lost while cutting before the program is paused";
+pin in s32 arc_max_starts "Torch starts tried before giving up";
+pin in float arc_ok_high "Mode 0: highest arc voltage counted as a valid arc";
+pin in bit arc_ok_in "Modes 1 and 2: arc OK signal of the plasma source";
+pin in float arc_ok_low "Mode 0: lowest arc voltage counted as a valid arc";
+pin out bit arc_ok_out "Arc OK as judged for the mode";
+pin in float arc_voltage_in "Raw arc voltage (modes 0 and 1)";
+pin in float arc_voltage_offset "Raw reading that means 0 volts";
+pin out float arc_voltage_out "Arc voltage in volts after offset, scale, low-pass and zero window";
+pin in float arc_voltage_scale "Volts per raw unit";
+pin in float axis_x_max_limit "X maximum limit (machine units)";
+pin in float axis_x_min_limit "X minimum limit (machine units)";
+pin in float axis_x_position "X position (machine units)";
+pin in float axis_y_max_limit "Y maximum limit (machine units)";
+pin in float axis_y_min_limit "Y minimum limit (machine units)";
+pin in float axis_y_position "Y position (machine units)";
+pin in float axis_z_max_limit "Z maximum limit (machine units)";
+pin in float axis_z_min_limit "Z minimum limit (machine units)";
+pin in float axis_z_position "Z position including the external offset (machine units)";
+pin in bit breakaway "Torch breakaway switch";
 pin in bit consumable_change "While paused: TRUE moves to the consumable change offset, FALSE moves back";
-pin in bit cornerlock_enable "Hold torch height control while the machine runs slower than the threshold";
-pin in float cornerlock_threshold = 90.0 "Corner lock threshold in percent of the cut feed rate";
+pin out bit consumable_changing "TRUE during a consumable change";
+pin in bit cornerlock_enable "Enable the corner lock of torch height control";
+pin out bit cornerlock_is_locked "TRUE while the corner lock holds torch height control";
+pin in float cornerlock_threshold "Velocity in percent of the requested feed below which the corner lock sets";
+pin in float creep_speed "Ramp pierce: creep speed (percent of the cut feed rate)";
+pin in float creep_speed_distance "Ramp pierce: distance at creep speed";
+pin out float current_feed_rate "current-velocity times 60";
 pin in float current_velocity "Current tool velocity (machine units per second)";
-pin in float cut_feed_rate "Cut feed rate of the material (machine units per minute)";
-pin in float cut_height "Torch height while cutting (machine units)";
-pin in bit cutting_start "Cut request (spindle on): a rising edge starts a cut, FALSE ends it";
-pin in bit cutting_stop "TRUE ends the current cut like a falling cutting-start";
-pin in float cut_volts "Target arc voltage for torch height control when auto volts is off";
-pin in float feed_override = 1.0 "Feed override factor (1.0 = 100%)";
-pin in float feed_reduction "Percentage (1 to 99) of the cut feed rate while cutting; 0 or 100 = full speed";
-pin in bit float_switch "Float switch: ends a probe; TRUE during a cut pauses the program";
-pin in float float_switch_travel "Torch travel from touching the material until the float switch trips";
-pin in float height_override "Height change in volts requested by the operator";
-pin in float height_per_volt = 0.1 "Torch height change per arc volt (machine units)";
-pin in bit ignore_arc_ok_0 "Do not need or supervise a valid arc (for example when marking)";
-pin in bit ignore_arc_ok_1 "Do not need or supervise a valid arc, second source";
-pin in bit kerfcross_enable "Hold torch height control while the arc voltage rises like when crossing a kerf";
-pin in float kerfcross_override = 100.0 "Kerf crossing rate threshold in percent of 1000 volts per second";
-pin in bit machine_is_on "Machine on; FALSE stops everything and clears the offsets";
-pin in float max_offset "Largest height correction from cut height (machine units); 0 = no limit";
-pin in s32 mode "0: arc OK and height control from arc voltage; 1: arc OK from arc-ok-in, height from arc voltage; 2: arc OK from arc-ok-in, height from move-up/move-down";
-pin in s32 motion_type "Motion type of the current move; height control runs only for feed (2) and arc (3) moves";
-pin in bit move_down "Mode 2: move the torch down while cutting";
-pin in bit move_up "Mode 2: move the torch up while cutting";
-pin in bit ohmic_probe "Ohmic contact sense input";
-pin in bit ohmic_probe_enable "Use the ohmic contact as well as the float switch to find the material";
-pin in float ohmic_probe_offset "Distance added to the Z of an ohmic contact to get the material surface";
-pin in float paused_motion_speed "While paused: run along the path with the torch off at this fraction of the feed (-1 to 1, negative runs backwards); 0 pauses again";
-pin in float pid_d_gain "Derivative gain of the arc voltage loop (percent of thc-feed-rate per volt per second)";
-pin in float pid_i_gain "Integral gain of the arc voltage loop (percent of thc-feed-rate per volt second)";
-pin in float pid_p_gain = 10.0 "Proportional gain of the arc voltage loop (percent of thc-feed-rate per volt)";
-pin in float pierce_delay "Seconds to wait at pierce height after the arc is OK";
-pin in float pierce_height "Torch height for piercing (machine units)";
-pin in float probe_feed_rate "Feed rate of the slow probe (machine units per minute)";
-pin in float probe_start_height "Height above the Z minimum limit where the slow probe starts";
-pin in bit probe_test "While idle, a rising edge probes the material and holds the torch at pierce height until FALSE";
-pin in bit program_is_idle "Program is idle (stopped)";
+pin in float cut_feed_rate "Cut feed rate (machine units per minute)";
+pin in float cut_height "Cut height above the material";
+pin in float cut_height_delay "Seconds added to the pierce delay before moving to cut height";
+pin out float cut_length "Length cut in this run (machine units)";
+pin out bit cut_recovering "TRUE during a cut recovery";
+pin in bit cut_recovery "While paused: TRUE moves X/Y to the recovery offsets";
+pin out float cut_time "Seconds cut in this run";
+pin in float cut_volts "Target arc voltage when auto volts is off";
+pin in bit cutting_start "Cut request (spindle.0.on)";
+pin out bit cutting_stop "TRUE when a manual cut was stopped after failed starts";
+pin in bit debug_print "TRUE prints the state changes (and sets the RTAPI message level to INFO)";
+pin in bit dry_run "Run the program without cutting";
+pin in bit external_estop "External emergency stop";
+pin out bit feed_hold "To motion: hold motion while the torch is not ready";
+pin in float feed_override "Feed override factor";
+pin in float feed_reduction "Feed in percent of the cut feed rate while cutting (0 or 100: none)";
+pin in float feed_upm "Feed rate of the current move (machine units per minute)";
+pin in bit float_switch "Float switch";
+pin in float float_switch_travel "Torch travel from the material until the float switch trips";
+pin in float gcode_scale = 1 "G-code scale factor";
+pin in float gouge_speed "Ramp pierce: gouge speed (percent of the cut feed rate)";
+pin in float gouge_speed_distance "Ramp pierce: distance at gouge speed";
+pin in float height_override "Height change in volts from the operator";
+pin in float height_per_volt "Height change per volt of height override (machine units)";
+pin in bit homed "Machine is homed";
+pin in bit ignore_arc_ok_0 "Ignore arc OK (first source)";
+pin in bit ignore_arc_ok_1 "Ignore arc OK (second source)";
+pin out bit jog_inhibit "To motion: no jogging while a sensor is active";
+pin in float kerf_width "Accepted, unused";
+pin in bit laser_mode "Laser cutting: no arc needed";
+pin in s32 laser_recovery_start "Laser recovery request";
+pin out s32 laser_recovery_state "0 off, 1 set, 2 setting, 3 on, 4 reset, 5 resetting";
+pin in s32 laser_x_offset "Laser X offset from the torch (offset counts)";
+pin in s32 laser_y_offset "Laser Y offset from the torch (offset counts)";
+pin out bit led_down "Torch height control moving down";
+pin out bit led_up "Torch height control moving up";
+pin in s32 low_cut_volts "Arc voltage below which a cut with THC active is stopped (0 = off)";
+pin in float lowpass_frequency "Arc voltage low-pass cut-off frequency (Hz, 0 = off)";
+pin in bit machine_is_on "Machine is on";
+pin in float material_thickness "Material thickness for the first probe start height";
+pin in s32 max_offset = 5 "Room kept below the Z maximum limit (mm)";
+pin in bit mesh_arc_ok "Accepted, unused";
+pin in bit mesh_enable "Mesh cutting: no arc OK needed, no THC";
+pin in s32 mode "0 arc voltage and arc OK from it, 1 arc voltage and arc-ok-in, 2 arc-ok-in and move-up/move-down";
+pin in s32 motion_type "Motion type of the current move (1 = rapid)";
+pin in bit move_down "Mode 2: move the torch down";
+pin in bit move_up "Mode 2: move the torch up";
+pin in bit multi_tool = TRUE "Allow the scribe and spotting tools";
+pin in float offset_feed_rate "Feed rate of the offset probe XY move (machine units per minute)";
+pin in float offset_probe_delay "Seconds to wait for the offset probe to deploy";
+pin in float offset_probe_x "X offset of the probe from the torch";
+pin in float offset_probe_y "Y offset of the probe from the torch";
+pin out float offset_scale "To axis.L.eoffset-scale: machine units per offset count";
+pin in bit offset_set_probe "Deploy the probe (while idle)";
+pin in bit offset_set_scribe "Deploy the scribe (while idle)";
+pin in bit offsets_active "From motion.eoffset-active";
+pin in bit offsets_limited "From motion.eoffset-limited";
+pin out bit ohmic_enable "Ohmic probe circuit power";
+pin in s32 ohmic_max_attempts "Failed ohmic probes before the float switch is accepted";
+pin in bit ohmic_probe "Ohmic contact";
+pin in bit ohmic_probe_enable "Use ohmic probing";
+pin in float ohmic_probe_offset "Height of the torch above the material at ohmic contact";
+pin in bit ohmic_sense_in "Raw ohmic sense input";
+pin in s32 ohmic_sense_off_delay = 3 "Periods the raw ohmic sense must be FALSE to clear ohmic-sense-out";
+pin in s32 ohmic_sense_on_delay = 3 "Periods the raw ohmic sense must be TRUE to set ohmic-sense-out";
+pin out bit ohmic_sense_out "Debounced ohmic sense";
+pin in bit ohmic_test "Ohmic test request (while idle)";
+pin in s32 ok_sample_counts = 10 "Mode 0: arc voltage samples that must agree for arc OK (1..1000)";
+pin in float ok_sample_threshold = 10 "Mode 0: volts within which those samples must agree";
+pin in bit override_jog "Allow jogging while a sensor is active";
+pin in float pause_at_end "Seconds to keep the torch on at the end of a cut";
+pin out bit paused_motion "TRUE while moving along the path while paused";
+pin in float paused_motion_speed "While paused: fraction of the feed to move along the path (-1..1)";
+pin out float paused_time "Seconds paused in this run";
+pin in float pid_d_gain "THC derivative gain";
+pin in float pid_i_gain "THC integral gain (not accumulated, as LinuxCNC)";
+pin in float pid_p_gain "THC proportional gain (mode 2: percent of thc-feed-rate)";
+pin out s32 pierce_count "Torch starts in this run";
+pin in float pierce_delay "Seconds at pierce height after arc OK";
+pin in float pierce_end_height "Ramp pierce: height at the end of the pierce";
+pin in float pierce_height "Pierce height above the material";
+pin in float pierce_motion_delay "Pierce with motion: percent of pierce-delay before moving";
+pin in s32 pierce_type "0 none, 1 wiggle, 2 ramp";
+pin in float probe_feed_rate "Probe feed rate (machine units per minute)";
+pin in s32 probe_final_speed = 1 "Speed feeling for the top after a contact (1..10 times resolution)";
+pin out bit probe_out "float-switch AND tube-cut while idle";
+pin in float probe_start_height "Probe start height above the Z minimum limit";
+pin in bit probe_test "Probe test request";
+pin out bit probe_test_error "TRUE after a probe test failed";
+pin out float probe_time "Seconds probing in this run";
+pin in bit program_is_idle "Program is idle";
 pin in bit program_is_paused "Program is paused";
 pin in bit program_is_running "Program is running";
-pin in float puddle_jump_delay "Seconds at puddle jump height after the pierce delay";
-pin in float puddle_jump_height "Puddle jump height in percent of pierce height; 0 = no puddle jump";
-pin in float requested_velocity "Requested tool velocity (machine units per second); corner lock reference when cut-feed-rate is 0";
-pin in bit out_of_limits "TRUE when the program would leave the machine limits; a cut start then stops the program";
-pin in float safe_height "Torch height between cuts (machine units)";
-pin in float setup_feed_rate "Feed rate of torch height moves other than probing (machine units per minute)";
-pin in float skip_ihs_distance "A cut starting closer than this to the end of the previous cut is not probed; 0 = always probe";
-pin in float thc_delay "Seconds after reaching cut height before torch height control starts";
-pin in bit thc_disable "Disable torch height control (from the program)";
-pin in bit thc_enable "Enable torch height control (from the operator)";
-pin in float thc_feed_rate "Largest torch height control velocity (machine units per minute)";
-pin in s32 thc_sample_counts = 50 "Cycles of arc voltage averaged for the target voltage when auto volts is on";
-pin in float thc_threshold = 1.0 "Voltage error below which the height is not corrected";
-pin in bit torch_enable "Allow the torch to be switched on; FALSE runs programs without cutting";
-pin in bit torch_pulse_start "While idle, a rising edge switches the torch on for torch-pulse-time";
-pin in float torch_pulse_time "Seconds the torch is on for a torch pulse";
-pin in float units_per_mm = 1.0 "Machine units per millimetre (1 for metric machines, 1/25.4 for inch machines)";
-pin in bit use_auto_volts "Take the target voltage from the arc at the end of thc-delay instead of cut-volts";
-pin in float x_offset "X offset of the consumable change position (machine units)";
-pin in float xy_feed_rate "Feed rate of consumable change moves (machine units per minute)";
-pin in float y_offset "Y offset of the consumable change position (machine units)";
-pin in float arc_lost_delay "Seconds a lost arc is tolerated while cutting before the program is paused";
-pin in bit cut_recovery "While paused: TRUE moves X/Y to x-offset, y-offset and keeps them there for the restarted cut";
-pin in s32 cut_type "0: normal cut; 1: pierce only (the torch goes off after the pierce delay)";
-pin in bit debug_print "Accepted for HAL file compatibility; this component never prints from the realtime cycle";
-pin in bit external_estop "External emergency stop: torch and scribe off, program stop, offsets back to 0";
-pin in bit laser_recovery_start "While paused: TRUE moves X/Y by laser-x-offset, laser-y-offset; FALSE moves back";
-pin in float laser_x_offset "X distance of the alignment laser from the torch (machine units)";
-pin in float laser_y_offset "Y distance of the alignment laser from the torch (machine units)";
-pin in bit mesh_enable "Mesh mode: no arc OK needed or supervised and no height control";
-pin in bit multi_tool "Allow the scribe (scribe-start) and spotting (spotting-start) tools";
-pin in float offset_probe_delay "Seconds to wait at the probe offset position before probing";
-pin in float offset_probe_x "X offset moved before probing when the probe is not at the torch (machine units)";
-pin in float offset_probe_y "Y offset moved before probing when the probe is not at the torch (machine units)";
-pin in bit offset_set_probe "While idle, a rising edge probes without the probe offset and holds at pierce height until FALSE";
-pin in bit offset_set_scribe "While idle, TRUE arms and then fires the scribe (to mark the material) until FALSE";
-pin in bit offsets_active "External offsets still applied by motion; returns to idle wait until FALSE";
-pin in s32 ohmic_max_attempts "Probes retried when the float switch trips without an ohmic contact; then the float switch is used";
-pin in bit ohmic_test "While idle, TRUE powers the ohmic contact circuit (ohmic-enable) for a test";
+pin out bit program_pause "To halui: pause the program";
+pin out bit program_resume "To halui: resume the program";
+pin out bit program_run "To halui: run the program";
+pin out bit program_stop "To halui: stop the program";
+pin in float puddle_jump_delay "Seconds at puddle jump height";
+pin in float puddle_jump_height "Puddle jump height in percent of pierce height (0 or 100: none)";
+pin out float rapid_time "Seconds in rapid moves in this run";
+pin out float requested_feed_rate "Feed rate requested while cutting";
+pin in float requested_velocity "Accepted, unused";
+pin in s32 resolution = 100 "Offset counts per machine unit per second (1..1000)";
+pin in float restart_delay "Seconds between a failed start and the next";
+pin out float run_time "Seconds running in this run";
+pin in float safe_height "Safe height above the material (0 = as high as possible)";
+pin out bit safe_height_is_limited "TRUE when the safe height had to be reduced";
+pin out bit scribe_arm "Scribe arm output";
 pin in float scribe_arm_delay "Seconds between arming the scribe and switching it on";
+pin out bit scribe_on "Scribe on output";
 pin in float scribe_on_delay "Seconds after switching the scribe on before motion is released";
-pin in bit scribe_start "Scribe request (spindle 1 on) with multi-tool: a rising edge starts scribing, FALSE ends it";
-pin in bit spotting_start "Spotting request (spindle 2 on) with multi-tool: a rising edge probes and fires a spot";
-pin in float spotting_threshold "Arc voltage that starts the spotting timer; 0 starts it when the torch switches on";
-pin in float spotting_time "Milliseconds the torch stays on after the spotting threshold is reached";
-pin in float thc_sample_threshold "Auto volts samples count only while the voltage changes less than this per cycle; 0 = always";
-pin in bit torch_off "TRUE switches the torch off and ends the cut; no cut or torch pulse starts while TRUE";
-pin in bit voidlock_enable "Hold torch height control while the arc voltage rises steeply (voids, kerf crossings)";
-pin in s32 voidlock_off_cycles = 10 "Cycles within thc-threshold of the target that release the void lock";
-pin in s32 voidlock_on_cycles = 2 "Consecutive cycles above voidlock-slope that set the void lock";
-pin in float voidlock_slope = 500.0 "Arc voltage rise in volts per second that counts toward the void lock";
-pin in float zero_window "arc-voltage-out reads 0 while the arc voltage is within this many volts of 0";
-pin out float adaptive_feed = 1.0 "Adaptive feed factor for motion (feed reduction)";
-pin out bit arc_ok_out "Arc OK as judged from the source selected by mode";
-pin out float arc_voltage_out "Arc voltage in volts";
-pin out bit cornerlock_is_locked "Height control held by the corner lock";
-pin out float cut_length "Total length cut with a valid arc (machine units)";
-pin out float cut_time "Total time cut with a valid arc (seconds)";
-pin out s32 error_out "Last fault: 0 none, 1 breakaway, 2 float switch, 3 probe reached the Z minimum limit, 4 no arc after arc-max-starts starts, 5 arc lost while cutting, 6 out of limits, 7 float switch active before probing, 8 external estop";
-pin out bit feed_hold "TRUE holds motion until the torch is at cut height";
-pin out bit kerfcross_is_locked "Height control held by the kerf crossing detection";
-pin out bit led_down "Height control is moving the torch down";
-pin out bit led_up "Height control is moving the torch up";
-pin out float offset_scale "Machine units per offset count, for axis.N.eoffset-scale";
-pin out bit ohmic_enable "Power the ohmic contact circuit (while probing with ohmic-probe-enable)";
-pin out s32 pierce_count "Number of successful pierces";
-pin out bit probe_test_error "The last probe test did not find the material";
-pin out bit program_pause "Pause request for the program (held until the program is paused)";
-pin out bit program_resume "Resume request for paused motion (held until the program runs)";
-pin out bit program_stop "Stop request for the program (held until the program is idle)";
-pin out s32 state_out "Current state (see the description)";
-pin out s32 stop_type_out "Action after the torch reached a safe position: 0 none, 1 stop, 2 pause";
-pin out bit thc_active "Height control is correcting the torch height";
-pin out bit thc_enabled "Height control is enabled (thc-enable and not thc-disable)";
-pin out bit torch_on "Switch the plasma torch on";
-pin out s32 x_offset_counts "X external offset in counts of offset-scale";
-pin out bit xy_offset_enable "Enable for the X and Y external offsets";
-pin out s32 y_offset_counts "Y external offset in counts of offset-scale";
-pin out float z_height "Torch height above the material once it has been found (machine units)";
-pin out s32 z_offset_counts "Z external offset in counts of offset-scale";
-pin out bit z_offset_enable "Enable for the Z external offset";
-pin out s32 laser_recovery_state "0 none, 1 moving to the laser position, 2 at the laser position, 3 moving back";
-pin out bit scribe_arm "Arm (lower) the scribe";
-pin out bit scribe_on "Switch the scribe on";
-pin out bit voidlock_is_locked "Height control held by the void lock";
-pin out float x_offset_current "X external offset now applied (machine units)";
-pin out float y_offset_current "Y external offset now applied (machine units)";
-pin out float z_offset_current "Z external offset now applied (machine units)";
-variable int state;
-variable double zoff;
-variable double xoff;
-variable double yoff;
-variable double zbase;
-variable double zzero;
-variable int have_zero;
-variable double zcontact;
-variable int contact_float;
+pin in bit scribe_start "Scribe request (spindle.1.on)";
+pin out bit sensor_active "breakaway, float switch or ohmic contact active";
+pin in float setup_feed_rate "Feed rate of torch height moves (machine units per minute)";
+pin in float skip_ihs_distance "Cuts starting closer than this to the previous one are not probed";
+pin in float slat_height "Slat height for the first probe start height";
+pin in bit spotting_start "Spotting request (spindle.2.on)";
+pin in float spotting_threshold "Arc voltage that starts the spotting timer";
+pin in float spotting_time "Milliseconds the torch stays on after the spotting threshold";
+pin out s32 state_out "State (see the description)";
+pin out s32 stop_type_out "0 none, 1 stop, 2 wait, 3 pause";
+pin in s32 target_samples = 6 "Samples averaged for the auto volts target";
+pin out float target_volts "Target arc voltage of THC";
+pin out bit thc_active "TRUE while THC moves the torch";
+pin in bit thc_auto "Take the target voltage as soon as the arc is steady";
+pin in float thc_delay "Seconds after reaching cut height before THC starts";
+pin in bit thc_disable "Disable THC (from the program)";
+pin in bit thc_enable "Enable THC (from the operator)";
+pin out bit thc_enabled "THC allowed";
+pin in float thc_feed_rate "Largest THC speed (machine units per minute)";
+pin in s32 thc_sample_counts = 50 "THC auto samples (1..1000)";
+pin in float thc_sample_threshold = 1 "Volts within which the THC auto samples must agree";
+pin in float thc_threshold "Voltage error below which THC does not move";
+pin in bit torch_enable "Allow the torch to be switched on";
+pin in bit torch_off "Switch the torch off";
+pin out bit torch_on "Torch on output";
+pin in bit torch_pulse_abort "End a torch pulse";
+pin in bit torch_pulse_hold "Keep a torch pulse on";
+pin in bit torch_pulse_start "Start a torch pulse (while idle)";
+pin in float torch_pulse_time "Seconds of a torch pulse";
+pin out float torch_time "Seconds with the torch on in this run";
+pin in bit tube_cut "Tube cutting: no probing";
+pin in float units_per_mm "Machine units per millimetre";
+pin in bit use_auto_volts "Take the target voltage from the arc";
+pin in bit voidlock_enable "Enable the void lock of THC";
+pin out bit voidlock_is_locked "TRUE while the void lock holds THC";
+pin in s32 voidlock_off_cycles = 10 "Periods that release the void lock";
+pin in s32 voidlock_on_cycles = 2 "Periods of steep voltage change that set the void lock";
+pin in s32 voidlock_slope = 500 "Arc voltage slope (volts per second) counted toward the void lock";
+pin in s32 x_offset "Consumable change X offset (offset counts)";
+pin out s32 x_offset_counts "To axis.x.eoffset-counts";
+pin in float x_offset_current "From axis.x.eoffset";
+pin in float xy_feed_rate "Feed rate of consumable change moves (machine units per minute)";
+pin out bit xy_offset_enable "To axis.x/y.eoffset-enable";
+pin in s32 y_offset "Consumable change Y offset (offset counts)";
+pin out s32 y_offset_counts "To axis.y.eoffset-counts";
+pin in float y_offset_current "From axis.y.eoffset";
+pin out float z_height "Torch height above the material (or the Z minimum limit before probing)";
+pin out s32 z_offset_counts "To axis.z.eoffset-counts";
+pin in float z_offset_current "From axis.z.eoffset";
+pin out bit z_offset_enable "To axis.z.eoffset-enable";
+pin out float z_relative "Not written (LinuxCNC compatibility)";
+pin in float zero_window = 0.1 "Volts around 0 read as 0";
+variable double offset_res;
+variable double vs;
+variable double raw_volts;
+variable double ring[1000];
+variable int ring_idx;
+variable int ring_n;
+variable double lost_timer;
+variable double fail_timer;
+variable double restart_timer;
 variable double timer;
-variable int starts;
+variable double spot_timer;
+variable double thc_timer;
+variable double bad_volts_timer;
+variable double zero;
+variable int has_zero;
+variable int probe_required = 1;
+variable int first_cut = 1;
+variable int probe_start;
+variable int cut_t;
+variable int pierce_t;
+variable int pierce_end_t;
+variable int puddle_t;
+variable int safe_t;
+variable int top_t;
+variable int bottom_t;
+variable int x_target;
+variable int y_target;
+variable double start_x;
+variable double start_y;
 variable double end_x;
 variable double end_y;
-variable double prev_x;
-variable double prev_y;
-variable double volts;
-variable double prev_volts;
-variable double volts_target;
-variable double volts_sum;
-variable int volts_n;
-variable double pid_int;
-variable double pid_prev;
-variable int arc_ok_now;
-variable int last_start;
-variable int last_probe_test;
-variable int last_pulse;
-variable int probe_testing;
-variable int seen_paused;
-variable int tool;
+variable int thc_was_active;
+variable double e_prev;
+variable double v_prev;
+variable double override_prev;
+variable double auto_sum;
+variable int auto_n;
+variable double pierce_dist;
+variable double pierce_px;
+variable double pierce_py;
+variable int starts;
 variable int ohmic_tries;
-variable double lost_timer;
-variable int spot_armed;
-variable double probe_x0;
-variable double probe_y0;
-variable int probe_offset_used;
-variable int void_on;
-variable int void_off;
-variable int last_scribe;
-variable int last_spot;
-variable int last_set_probe;
-function _;
-description """A torch height and cut sequence controller for plasma tables, in the
-style of QtPlasmaC. All Z motion is made through external offsets: the component
-moves its own offset at the feed rate of each step and writes it to
-z-offset-counts (and X/Y for the consumable change) in counts of offset-scale,
-which is 0.001 mm expressed in machine units (0.001 * units-per-mm). A feed rate
-of 0 makes the move in one cycle.
-
-A cut starts on a rising edge of cutting-start (spindle on) while the machine is on
-and the torch is enabled. The states (state-out) are:
-
-  0 IDLE           waiting for a cut, a probe test or a torch pulse
-  1 PROBE_HEIGHT   fast down to probe-start-height above Z minimum
-  2 PROBE_DOWN     slow down until float switch or ohmic contact
-  3 PROBE_UP       slow up until the float switch opens again
-  4 ZERO_HEIGHT    material surface recorded
-  5 PIERCE_HEIGHT  move to pierce-height
-  6 TORCH_ON       torch on (after arc-restart-delay on a restart)
-  7 ARC_OK         waiting up to arc-fail-delay for a valid arc
-  8 PIERCE_DELAY   waiting pierce-delay
-  9 PUDDLE_JUMP    at puddle-jump-height percent of pierce height
- 10 CUT_HEIGHT     move to cut-height, then feed-hold is released
- 11 CUT_MODE_01    cutting, arc voltage height control (modes 0, 1)
- 12 CUT_MODE_2     cutting, move-up/move-down control (mode 2)
- 13 END_CUT        torch off at the end of a cut
- 14 SAFE_HEIGHT    move to safe-height above the material
- 15 MAX_HEIGHT     offset back to 0 (the programmed Z)
- 16 TORCH_PULSE    torch on for torch-pulse-time
- 17 PAUSED         paused by a fault or the operator
- 18 PROBE_TEST     holding at pierce height after a probe test
- 19 CONSUMABLE_CHANGE_ON   X/Y moving to x-offset, y-offset
- 20 CONSUMABLE_CHANGE_OFF  X/Y moving back
- 21 PAUSED_MOTION  running at paused-motion-speed, torch off
- 22 SCRIBE_ARM     scribe armed for scribe-arm-delay
- 23 SCRIBE_ON      scribe on, waiting scribe-on-delay
- 24 SCRIBING       motion runs with the scribe on
- 25 SPOTTING       torch on for a spot
- 26 OHMIC_RETRY    float switch without ohmic contact: up until it opens, probe again
- 27 OFFSET_PROBE   X/Y moving to the probe offset, then waiting offset-probe-delay
- 28 OFFSET_RETURN  X/Y moving back from the probe offset
- 29 RECOVER_RETURN cutting from a cut recovery offset back onto the path
- 30 CUT_RECOVERY   paused, X/Y following x-offset, y-offset
- 31 LASER_RECOVERY paused, X/Y at the laser offsets and back
-
-The surface is the Z where the float switch opened plus
-float-switch-travel, or the Z of the ohmic contact plus ohmic-probe-offset.
-
-When no arc is seen within arc-fail-delay the torch is switched off, and after
-arc-restart-delay switched on again; after arc-max-starts failed starts the program is
-paused (error-out 4). Resuming the paused program restarts the cut from probing.
-A breakaway during a cut, a float switch during piercing or cutting or a lost arc
-(unless ignore-arc-ok-0/1) switches the torch off, requests a pause and raises the
-torch to the programmed Z. A probe that reaches the Z minimum limit, or a start
-while out-of-limits is TRUE, requests a program stop; probing needs
-axis-z-min-limit below axis-z-max-limit. Stopping the program or the
-end of the cut switches the torch off.
-While paused, consumable-change moves X/Y to the change offset and back, and a
-non-zero paused-motion-speed requests a resume with adaptive-feed set to that
-speed and the torch off; setting it back to 0 requests a pause again.
-
-With multi-tool TRUE, a rising scribe-start arms the scribe (scribe-arm), switches it
-on (scribe-on) after scribe-arm-delay and releases motion after scribe-on-delay; it
-ends when scribe-start falls. offset-set-scribe does the same while the program is
-idle. A rising spotting-start probes like a cut, moves to pierce height and
-switches the torch on; once the arc voltage reaches spotting-threshold the torch
-stays on for spotting-time milliseconds. cut-type 1 pierces only: the torch goes
-off after the pierce delay. torch-off TRUE ends a cut with the torch off (no pause)
-and blocks cuts, spots and torch pulses. mesh-enable cuts without arc OK and without
-height control. external-estop switches torch and scribe off, requests a program
-stop (error 8), returns all offsets to 0 and blocks every start while TRUE.
-
-When offset-probe-x or offset-probe-y is not 0, X/Y move by them at xy-feed-rate
-before probing, wait offset-probe-delay and move back after the surface is found;
-offset-set-probe runs a probe test without that move. With ohmic-probe-enable, a
-float switch trip without ohmic contact rises until the switch opens and probes
-again, at most ohmic-max-attempts times, then the float switch is used. ohmic-test
-powers ohmic-enable while idle. While paused, cut-recovery moves X/Y to x-offset,
-y-offset and keeps them there: the resumed cut starts at that point and moves back
-to the path at cut-feed-rate before motion is released; laser-recovery-start moves
-X/Y to laser-x-offset, laser-y-offset and back (laser-recovery-state). Returns to
-IDLE or PAUSED after MAX_HEIGHT or a consumable change wait until offsets-active
-is FALSE. x/y/z-offset-current show the offsets applied. A lost arc pauses only
-after arc-lost-delay seconds. debug-print is accepted and has no effect.
-arc-voltage-out reads 0 within zero-window volts of 0.
-
-Height control (CUT_MODE_01) starts thc-delay seconds after cut height is reached,
-when thc-enable is TRUE and thc-disable FALSE. The target is cut-volts, or with
-use-auto-volts the mean of thc-sample-counts cycles of arc voltage taken after
-thc-delay, plus height-override. When the voltage differs from the target by more
-than thc-threshold, the torch moves at a velocity of thc-feed-rate times the PID
-output in percent (clamped to 100): up when the voltage is low, down when it is
-high. It holds while motion-type is not a feed or arc move, while the corner lock
-(velocity below cornerlock-threshold percent of cut-feed-rate times feed-override)
-or the kerf crossing lock (voltage rising faster than kerfcross-override percent of
-1000 V/s, released when the voltage is back within thc-threshold of the target) or
-the void lock (voidlock-on-cycles cycles rising faster than voidlock-slope volts per
-second, released after voidlock-off-cycles cycles within thc-threshold of the target)
-is on. Auto volts samples count only while the voltage changes by at most
-thc-sample-threshold per cycle (when it is above 0). Without height control the torch stays at cut-height plus height-override times
-height-per-volt. The correction stays within max-offset of cut height and the Z limits.""";
+variable int probe_type;
+variable int probe_retry;
+variable int probe_inhibit;
+variable int cut_started;
+variable int job;
+variable int stats_done;
+variable int limit_latched;
+variable int no_arc_told;
+variable int ohmic_on_n;
+variable int ohmic_off_n;
+variable int void_on_n;
+variable int void_off_n;
+variable int recovering;
+variable int cc_blocked;
+variable int spot_started;
+variable int scribe_phase;
+variable int pulse_recovery;
+variable int offset_probing;
+variable int last_state;
+variable int tool;
+variable int laser_x;
+variable int laser_y;
+variable int deploy;
+variable int safe_base;
+variable int ovr_target;
+variable int ovr_moving;
+function _ "Run plasmac (floating point)";
 option singleton yes;
 include <rtapi_math.h>;
+include "plasmac_defs.h";
 license "GPL";
 author "OpenEMC";
-;;
-#include "hal/components/plasmac_motion.h"
-#include "hal/components/plasmac_thc.h"
-#include "hal/components/plasmac_states.h"
-#include "hal/components/plasmac_tools.h"
-#include "hal/components/plasmac_recovery.h"
-#include "hal/components/plasmac_faults.h"
+description """LinuxCNC's plasmac (component version 016), the controller behind QtPlasmaC. It
+drives motion's external offsets: wire offset-scale to axis.L.eoffset-scale and
+x/y/z-offset-counts to axis.L.eoffset-counts; x/y/z-offset-current come from axis.L.eoffset.
+Offsets are counted in units of offset-scale = units-per-mm * period / resolution machine
+units; a feed rate F (units per minute) moves F * resolution / units-per-mm / 60 counts per
+period.
 
-/* One cycle: sense the arc, let faults override the state, run its handler, write outputs. */
+state-out: 0 IDLE, 1 PROBE_HEIGHT, 2 PROBE_DOWN, 3 PROBE_UP, 4 ZERO_HEIGHT, 5 PIERCE_HEIGHT,
+6 TORCH_ON, 7 ARC_OK, 8 PIERCE_DELAY, 9 PUDDLE_JUMP, 10 CUT_HEIGHT, 11 CUT_MODE_01, 12 CUT_MODE_2,
+13 PAUSE_AT_END, 14 SAFE_HEIGHT, 15 MAX_HEIGHT, 16 END_CUT, 17 END_JOB, 18 TORCHPULSE,
+19 PAUSED_MOTION, 20 OHMIC_TEST, 21 PROBE_TEST, 22 SCRIBING, 23 CONSUMABLE_CHANGE_ON,
+24 CONSUMABLE_CHANGE_OFF, 25 CUT_RECOVERY_ON, 26 CUT_RECOVERY_OFF, 27 DEBUG.
+stop-type-out: 0 none, 1 stop, 2 wait (M5 between cuts), 3 pause.
+
+A cut (spindle.0.on on cutting-start, not a dry run) probes the material (float switch or
+ohmic contact), moves to pierce height, starts the torch (arc-max-starts tries of
+arc-fail-delay seconds, restart-delay apart), waits pierce-delay (pierce with motion: wiggle or
+ramp), optionally jumps the puddle, goes to cut height and controls the height by arc voltage
+(modes 0 and 1: P, I and D gains, corner lock, void lock, height override, auto volts) or by
+move-up/move-down (mode 2). Mode 0 derives arc OK from the voltage, modes 1 and 2 take arc-ok-in.
+A breakaway, a float switch or ohmic contact, a lost arc, an offset limit, a probe reaching the
+bottom or an arc voltage below low-cut-volts switch the torch off, pause the program and raise the
+torch (MAX_HEIGHT); each is reported. At the end of a cut the torch goes to the safe height (or
+the top). While paused the operator can change consumables (x-offset, y-offset), recover a cut
+(cut-recovery, laser-recovery-start) or move along the path (paused-motion-speed). Scribe and
+spotting tools run with multi-tool. Statistics (cut length and times, pierce count) are reset
+when a program starts running.
+
+With debug-print TRUE every state change is printed, and the RTAPI message level is set to INFO
+(1, errors only, while FALSE) on every period, as LinuxCNC's plasmac does. An infinite or NaN
+arc-voltage-in is reported once a second and stops plasmac until it is valid again.""";
+;;
+#include "hal/components/plasmac_io.h"
+#include "hal/components/plasmac_move.h"
+#include "hal/components/plasmac_abort.h"
+#include "hal/components/plasmac_probe.h"
+#include "hal/components/plasmac_cut.h"
+#include "hal/components/plasmac_thc.h"
+#include "hal/components/plasmac_end.h"
+#include "hal/components/plasmac_pause.h"
+#include "hal/components/plasmac_cycle.h"
+
+/* One period: LinuxCNC's per-call sequence, then the state machine. */
 FUNCTION(_)
 {
-    plasmac_sense(__comp_inst);
-    if (!plasmac_faults(__comp_inst, fperiod))
-        plasmac_handlers[state](__comp_inst, fperiod);
-    plasmac_outputs(__comp_inst);
+    double t = fperiod;
+    if (!pm_before(__comp_inst, t)) return;
+    if (!machine_is_on) {
+        pm_machine_off(__comp_inst);
+    } else {
+        pm_run_state(__comp_inst, t);
+    }
+    pm_after(__comp_inst);
 }

@@ -1,174 +1,181 @@
-/* plasmac_thc.h: plasmac torch height control while cutting (included by plasmac.comp). */
+/* plasmac_thc.h: plasmac's cutting states: feed rate, target voltage, height override, corner and
+ * void lock, the arc voltage loop (CUT_MODE_01) and move-up/move-down (CUT_MODE_2). */
 
-/* Kerf crossing rate threshold at kerfcross-override 100%, in volts per second. */
-#define PM_KERF_RATE_BASE 1000.0
-
-/* Clear the height control state and its outputs before a cut or after it. */
-static void plasmac_thc_reset(struct __comp_state *__comp_inst)
+/* The feed rate the cut is asked to run at. */
+static void pm_requested_feed(struct __comp_state *__comp_inst)
 {
-    pid_int = 0.0;
-    pid_prev = 0.0;
-    volts_sum = 0.0;
-    volts_n = 0;
-    volts_target = 0.0;
-    thc_active = 0;
-    led_up = 0;
-    led_down = 0;
-    cornerlock_is_locked = 0;
-    kerfcross_is_locked = 0;
-    voidlock_is_locked = 0;
-    void_on = 0;
-    void_off = 0;
+    double scale = gcode_scale != 1 && gcode_scale != 0 ? gcode_scale : 1.0, f;
+    if (feed_upm != 0) f = adaptive_feed != 0 ? feed_upm / adaptive_feed : feed_upm;
+    else f = cut_feed_rate * feed_override;
+    requested_feed_rate = f / scale;
 }
 
-/* TRUE while the tool runs slower than the corner lock threshold. */
-static int plasmac_cornerlock(struct __comp_state *__comp_inst)
+/* TRUE when the cut runs at (practically) the requested feed rate. */
+static int pm_at_speed(struct __comp_state *__comp_inst)
 {
-    double ref = cut_feed_rate > 0.0 ? cut_feed_rate * feed_override / 60.0 : requested_velocity;
-    return cornerlock_enable && current_velocity < ref * cornerlock_threshold / 100.0;
+    return laser_mode || current_velocity * 60.0 > requested_feed_rate * 0.999;
 }
 
-/* Kerf crossing lock: set on a fast voltage rise, cleared back near the target. */
-static int plasmac_kerfcross(struct __comp_state *__comp_inst, double target, double dt)
+/* The mean of the last n voltages when they all lie within the threshold of the present one, else 0. */
+static double pm_auto_target(struct __comp_state *__comp_inst, int n)
 {
-    double rate = dt > 0.0 ? (volts - prev_volts) / dt : 0.0;
-    if (!kerfcross_enable)
-        return 0;
-    if (rate > PM_KERF_RATE_BASE * kerfcross_override / 100.0)
-        return 1;
-    if (kerfcross_is_locked && fabs(target - volts) <= thc_threshold)
-        return 0;
-    return kerfcross_is_locked;
+    double sum = 0;
+    if (!pm_ring_near(__comp_inst, n, arc_voltage_out, thc_sample_threshold)) return 0;
+    for (int k = 1; k <= n; k++) sum += ring[(ring_idx - k + PM_RING) % PM_RING];
+    return sum / n;
 }
 
-/* Void lock: set after voidlock-on-cycles steep rises, released after voidlock-off-cycles near the target. */
-static int plasmac_voidlock(struct __comp_state *__comp_inst, double target, double dt)
+/* No target yet: corner lock holds until the cut is at speed, then the target is taken. */
+static void pm_take_target(struct __comp_state *__comp_inst, double t)
 {
-    double rate = dt > 0.0 ? (volts - prev_volts) / dt : 0.0;
-    if (!voidlock_enable)
-        return 0;
-    void_on = rate > voidlock_slope ? void_on + 1 : 0;
-    if (void_on >= (voidlock_on_cycles > 0 ? voidlock_on_cycles : 1)) {
-        void_off = 0;
-        return 1;
-    }
-    if (!voidlock_is_locked)
-        return 0;
-    void_off = fabs(target - volts) <= thc_threshold ? void_off + 1 : 0;
-    return void_off < voidlock_off_cycles;
-}
-
-/* TRUE when this cycle's voltage is steady enough to be an auto volts sample. */
-static int plasmac_sample_steady(struct __comp_state *__comp_inst)
-{
-    return thc_sample_threshold <= 0.0 || fabs(volts - prev_volts) <= thc_sample_threshold;
-}
-
-/* Target arc voltage; returns 0 while auto volts is still sampling. */
-static int plasmac_target_volts(struct __comp_state *__comp_inst, double *target)
-{
-    int samples = thc_sample_counts > 0 ? thc_sample_counts : 1;
-    if (!use_auto_volts) {
-        *target = cut_volts + height_override;
-        return 1;
-    }
-    if (volts_n < samples) {
-        if (!plasmac_sample_steady(__comp_inst)) {
-            volts_sum = 0.0;
-            volts_n = 0;
-            return 0;
+    double v = 0;
+    cornerlock_is_locked = 1;
+    if (!pm_at_speed(__comp_inst)) return;
+    if (thc_auto && use_auto_volts) {
+        v = pm_auto_target(__comp_inst, pm_clampi(thc_sample_counts, 1, 1000));
+    } else if ((thc_timer -= t) <= 0) {
+        if (!use_auto_volts) {
+            v = cut_volts;
+        } else {
+            auto_sum += arc_voltage_out;
+            if (++auto_n >= target_samples) v = auto_sum / auto_n;
         }
-        volts_sum += volts;
-        if (++volts_n < samples)
-            return 0;
-        volts_target = volts_sum / samples;
     }
-    *target = volts_target + height_override;
+    if (v == 0) return;
+    target_volts = v;
+    cornerlock_is_locked = 0;
+    e_prev = 0;
+    v_prev = arc_voltage_out;
+}
+
+/* Corner lock below cornerlock-threshold percent of the requested feed, released above 99 percent. */
+static void pm_cornerlock(struct __comp_state *__comp_inst)
+{
+    double vel = current_velocity * 60.0;
+    if (!cornerlock_enable) {
+        cornerlock_is_locked = 0;
+        return;
+    }
+    if (vel < requested_feed_rate * cornerlock_threshold / 100.0) cornerlock_is_locked = 1;
+    else if (vel > requested_feed_rate * 0.99) cornerlock_is_locked = 0;
+}
+
+/* Void lock after voidlock-on-cycles steep voltage changes, released after voidlock-off-cycles calm periods. */
+static void pm_voidlock(struct __comp_state *__comp_inst, double t)
+{
+    int steep = fabs(arc_voltage_out - v_prev) > voidlock_slope * voidlock_on_cycles * t;
+    v_prev = arc_voltage_out;
+    if (!voidlock_enable) {
+        voidlock_is_locked = 0;
+        void_on_n = void_off_n = 0;
+        return;
+    }
+    void_on_n = steep ? void_on_n + 1 : 0;
+    if (void_on_n > voidlock_on_cycles) {
+        voidlock_is_locked = 1;
+        void_off_n = 0;
+    } else if (voidlock_is_locked && !steep && ++void_off_n >= voidlock_off_cycles) {
+        voidlock_is_locked = 0;
+    }
+}
+
+/* Move Z by step counts within the offset range; a step past it stops the cut (0). */
+static int pm_thc_step(struct __comp_state *__comp_inst, int step)
+{
+    int next = z_offset_counts + step;
+    led_up = step > 0;
+    led_down = step < 0;
+    if (step < 0 && next < pm_bottom_counts(__comp_inst)) {
+        pm_pause_msg("bottom limit reached while THC moving down.");
+        pm_abort(__comp_inst);
+        return 0;
+    }
+    if (step > 0 && next > top_t) {
+        pm_pause_msg("top limit reached while THC moving up.");
+        pm_abort(__comp_inst);
+        return 0;
+    }
+    z_offset_enable = 1;
+    z_offset_counts = next;
     return 1;
 }
 
-/* Torch velocity (units/s) from the voltage PID, 0 inside the threshold. */
-static double plasmac_pid_velocity(struct __comp_state *__comp_inst, double target, double dt)
+/* The arc voltage loop: P, I (not accumulated, as LinuxCNC) and D on a tenth of the voltage error. */
+static void pm_thc_pid(struct __comp_state *__comp_inst, double t)
 {
-    double err = target - volts, out;
-    if (fabs(err) <= thc_threshold) {
-        pid_prev = err;
-        return 0.0;
+    int res = pm_clampi(resolution, 1, 1000), v = pm_thc_speed(__comp_inst);
+    double e = (target_volts + height_override - arc_voltage_out) * 0.1, step;
+    if (fabs(e) < fabs(thc_threshold * 0.1)) e = 0;
+    step = e * pid_p_gain * res + e * pid_i_gain * res * t + (t > 0 ? (e - e_prev) * pid_d_gain * res / t : 0);
+    e_prev = e;
+    if (step > v) step = v;
+    if (step < -v) step = -v;
+    pm_thc_step(__comp_inst, pm_counts(step));
+}
+
+/* Raise the safe height with a torch that rose above the cut datum; report reaching the top once. */
+static void pm_safe_follow(struct __comp_state *__comp_inst)
+{
+    int raise = z_offset_counts - cut_t;
+    if (raise <= 0 || safe_base >= top_t) return;
+    safe_t = safe_base + raise;
+    if (safe_t < top_t) return;
+    safe_t = top_t;
+    if (safe_height_is_limited) return;
+    safe_height_is_limited = 1;
+    pm_msg(pm_upm(__comp_inst) == 1.0 ? "safe traverse height has been reduced to less than 13mm."
+                                       : "safe traverse height has been reduced to less than 0.5in.");
+}
+
+/* A change of height-override moves the torch at setup speed (down for positive volts). */
+static int pm_height_override(struct __comp_state *__comp_inst)
+{
+    if (!ovr_moving && fabs(height_override - override_prev) > PM_HEIGHT_OVERRIDE_STEP) {
+        ovr_target = z_offset_counts
+                     - pm_to_counts(__comp_inst, (height_override - override_prev) * height_per_volt);
+        override_prev = height_override;
+        ovr_moving = 1;
     }
-    pid_int += err * dt;
-    out = pid_p_gain * err + pid_i_gain * pid_int;
-    if (dt > 0.0)
-        out += pid_d_gain * (err - pid_prev) / dt;
-    pid_prev = err;
-    if (out > 100.0)
-        out = 100.0;
-    if (out < -100.0)
-        out = -100.0;
-    return thc_feed_rate / 60.0 * out / 100.0;
+    if (ovr_moving && pm_z_move(__comp_inst, ovr_target, pm_setup_speed(__comp_inst))) ovr_moving = 0;
+    return ovr_moving;
 }
 
-/* Velocity from the voltage loop (mode 0/1), or 0 while a lock or auto volts holds it. */
-static double plasmac_voltage_velocity(struct __comp_state *__comp_inst, double dt, int *active)
+/* Statistics and the end of a manual or idle-program cut. */
+static void pm_cut_common(struct __comp_state *__comp_inst, double t)
 {
-    double target = 0.0;
-    int known = plasmac_target_volts(__comp_inst, &target);
-    kerfcross_is_locked = known && plasmac_kerfcross(__comp_inst, target, dt);
-    voidlock_is_locked = known && plasmac_voidlock(__comp_inst, target, dt);
-    *active = *active && known && !kerfcross_is_locked && !voidlock_is_locked;
-    return *active ? plasmac_pid_velocity(__comp_inst, target, dt) : 0.0;
+    cut_length += current_velocity * t;
+    cut_time += t;
+    if (thc_active) thc_was_active = 1;
+    if (program_is_idle && !cutting_start) pm_goto(__comp_inst, PM_IDLE);
 }
 
-/* Apply a correction velocity within max-offset of cut height and the Z limits. */
-static void plasmac_correct(struct __comp_state *__comp_inst, double vel, double dt)
+/* CUT_MODE_01: height by arc voltage. */
+static void pm_cut_mode_01(struct __comp_state *__comp_inst, double t)
 {
-    double cut_z = plasmac_above_zero(__comp_inst, cut_height);
-    double z = plasmac_z(__comp_inst) + vel * dt;
-    if (max_offset > 0.0 && z > cut_z + max_offset)
-        z = cut_z + max_offset;
-    if (max_offset > 0.0 && z < cut_z - max_offset)
-        z = cut_z - max_offset;
-    z = plasmac_clamp_z(__comp_inst, z);
-    led_up = z > plasmac_z(__comp_inst) + PM_EPSILON;
-    led_down = z < plasmac_z(__comp_inst) - PM_EPSILON;
-    zoff = z - zbase;
-}
-
-/* Add the distance and time of this cycle to the cut statistics. */
-static void plasmac_cut_stats(struct __comp_state *__comp_inst, double dt)
-{
-    if (arc_ok_now || plasmac_ignore_arc(__comp_inst)) {
-        cut_time += dt;
-        cut_length += hypot(axis_x_position - prev_x, axis_y_position - prev_y);
+    pm_requested_feed(__comp_inst);
+    if ((torch_on || laser_mode) && !mesh_enable && !ignore_arc_ok_0 && !ignore_arc_ok_1) {
+        if (target_volts == 0) {
+            pm_take_target(__comp_inst, t);
+        } else if (!pm_height_override(__comp_inst) && thc_enabled) {
+            pm_cornerlock(__comp_inst);
+            pm_voidlock(__comp_inst, t);
+            if (!cornerlock_is_locked && !voidlock_is_locked) pm_thc_pid(__comp_inst, t);
+        }
+        pm_safe_follow(__comp_inst);
     }
-    prev_x = axis_x_position;
-    prev_y = axis_y_position;
+    if (state_out == PM_CUT_MODE_01) pm_cut_common(__comp_inst, t);
 }
 
-/* One cutting cycle: feed reduction, locks and the torch height correction. */
-static void plasmac_cut(struct __comp_state *__comp_inst, double dt, int up_down)
+/* CUT_MODE_2: height by move-up/move-down at the THC speed. */
+static void pm_cut_mode_2(struct __comp_state *__comp_inst, double t)
 {
-    int active, feed_move = motion_type == 2 || motion_type == 3;
-    double vel = 0.0;
-    timer += dt;
-    plasmac_cut_stats(__comp_inst, dt);
-    adaptive_feed = feed_reduction > 0.0 && feed_reduction < 100.0 ? feed_reduction / 100.0 : 1.0;
+    int v = pm_thc_speed(__comp_inst);
+    pm_requested_feed(__comp_inst);
     led_up = led_down = 0;
-    if (!(thc_enable && !thc_disable && !mesh_enable)) {
-        thc_active = 0;
-        cornerlock_is_locked = 0;
-        kerfcross_is_locked = 0;
-        voidlock_is_locked = 0;
-        plasmac_move_z(__comp_inst, plasmac_above_zero(__comp_inst, cut_height) +
-                       height_override * height_per_volt, thc_feed_rate, dt);
-        return;
+    if (thc_enabled && arc_ok_out) {
+        pm_cornerlock(__comp_inst);
+        if (!cornerlock_is_locked && move_up != move_down) pm_thc_step(__comp_inst, move_up ? v : -v);
+        pm_safe_follow(__comp_inst);
     }
-    cornerlock_is_locked = plasmac_cornerlock(__comp_inst);
-    active = timer >= thc_delay && feed_move && !cornerlock_is_locked;
-    if (up_down)
-        vel = active ? (move_up - move_down) * thc_feed_rate / 60.0 : 0.0;
-    else if (timer >= thc_delay)
-        vel = plasmac_voltage_velocity(__comp_inst, dt, &active);
-    thc_active = active;
-    if (vel != 0.0)
-        plasmac_correct(__comp_inst, vel, dt);
+    if (state_out == PM_CUT_MODE_2) pm_cut_common(__comp_inst, t);
 }

@@ -1,262 +1,194 @@
 component raster "Laser power along a raster line, from a program received through a HAL port";
-pin in port program "Raster programs: text of the form PPU;OFFSET;BPP;COUNT;HEXDATA, one after the other";
+pin in port program "Raster program: offset;bpp;ppu;count;pixels (see the description)";
 pin in float position "Position of the laser along the raster axis, in machine units";
-pin in bit reset "Rising edge: drop the program, clear any fault and discard unread port bytes; while TRUE nothing is read";
-pin in bit enable "Output is forced to 0 while FALSE; loading and position tracking go on";
-pin out float output "Laser power of the pixel under the laser, 0 to 100 (percent of full scale)";
-pin out s32 state "0 waiting for or loading a program, 1 running, 2 pass finished, 3 fault";
-pin out bit run "TRUE while a loaded program is being followed (state 1)";
-pin out bit fault "TRUE while in the fault state (3)";
-pin out s32 fault_code "Why the last program was refused: 0 none, 1 pixels-per-unit, 2 offset, 3 bits-per-pixel, 4 pixel count, 5 pixel data";
-pin out s32 current_pixel "Index of the pixel under the laser, -1 outside the raster line";
-variable int st;
-variable int field;
-variable char text[32];
-variable int text_len;
-variable double ppu;
-variable double offset;
-variable int bpp;
-variable int npixels;
-variable int nread;
-variable unsigned acc;
-variable int acc_bits;
-variable int entered;
-variable int last_reset;
-variable unsigned short pixel[8192];
-function _ "Read program bytes, follow the position and set the outputs";
-description """
-A raster program describes one line of pixels along an axis. It is written by
-a user program (for example a G-code remap in Python) into the port signal
-connected to program, as ASCII text:
-
-    PPU;OFFSET;BPP;COUNT;HEXDATA
-
-PPU is the number of pixels per machine unit (a decimal number above 0), OFFSET
-the position where pixel 0 starts (a decimal number, sign allowed), BPP the bits
-per pixel (1 to 16) and COUNT the number of pixels (1 to 8192). HEXDATA is a bit
-stream written as hexadecimal digits (either case), most significant bit first:
-pixel i is held in bits i*BPP to (i+1)*BPP-1, and the bits after the last pixel
-up to the end of the last digit are padding. So exactly ceil(COUNT*BPP/4) digits
-follow the header and the program ends with the last of them; the next program
-may follow right away. Whitespace is accepted only between programs.
-
-Bytes are taken from the port as they arrive, at most 1024 per period, so a
-program may be written in pieces and the function never waits. Once every pixel
-is read the program runs (state 1): pixel i covers positions from
-OFFSET+i/PPU up to OFFSET+(i+1)/PPU, and output is the value of the
-pixel under position scaled to 0..100 (the largest BPP-bit value gives
-100), or 0 when enable is FALSE or the position is outside the line.
-Because pixels are looked up by position, the same program serves a forward
-pass (position increasing) and a reverse pass (position decreasing). When the
-position leaves the line after having been on it, the pass is finished
-(state 2) and the next program is read from the port.
-
-A malformed program puts the component in the fault state (3): fault is
-TRUE, fault-code says which part was wrong, output is 0 and nothing
-more is read until a rising edge of reset, which also discards the rest
-of the port contents. Nothing is printed from the realtime function.
-""";
+pin in bit run "TRUE starts the program waiting in the port and keeps it running; FALSE ends it";
+pin in bit reset "TRUE: back to idle, fault cleared, the port emptied";
+pin out float output = -1 "Laser power in percent, -1 for off";
+pin out bit enabled "TRUE while a program runs";
+pin out s32 state "0 idle, 1 running, 2 fault";
+pin out bit fault "TRUE in the fault state (from the period after the fault)";
+pin out s32 fault_code "0 none, 1 invalid offset, 2 invalid bpp, 3 invalid ppu, 4 invalid count, 5 bad pixel data, 6 program size mismatch";
+pin out float program_offset "offset of the running program";
+pin out s32 bpp "Bits per pixel of the running program";
+pin out float ppu "Pixels per machine unit of the running program";
+pin out s32 count_ "Pixels of the running program";
+pin out float program_position "position when the program started";
+pin out float bitmap_position "Position along the line in pixels";
+pin out s32 current_pixel_index = -1 "Index of the last pixel read";
+pin out float current_pixel_value = -1 "Value of the last pixel read (percent, -1 off)";
+pin out float previous_pixel_value = -1 "Value of the pixel before it";
+pin out float fraction "Interpolation fraction between the previous and the current pixel";
+function _ "Start, follow and end the raster program";
+include <rtapi_math.h>;
+include "raster_parse.h";
 license "GPL";
 author "OpenEMC";
+description """
+LinuxCNC's raster. A raster program describes one line of pixels along an axis;
+a user program (for example the Python raster module) writes it into the port
+signal connected to program, as ASCII text, before setting run:
+
+    offset;bpp;ppu;count;pixels
+
+offset (a number) is where the line starts relative to the position when run
+rises; a negative offset means the line is swept from positive to negative. bpp,
+the bits per pixel, is 4, 8, ... or 32; each pixel is bpp/4 hexadecimal digits.
+ppu (above 0) is pixels per machine unit and count (at least 2) the number of
+pixels; exactly count*bpp/4 hex digits follow, without separators. A pixel of all
+ones (F, FF, ...) means laser off (output -1); any other value v is
+100*v/(2^bpp - 2) percent, so E is 100 percent at 4 bits per pixel.
+
+When run rises the header is checked (fault codes 1 offset, 2 bpp, 3 ppu,
+4 count) and the rest of the port must be exactly the pixel data (6); then
+the program runs: pixel k sits k/ppu from the start of the line, and output is
+the pixel's value when the position is on a pixel, the linear interpolation
+between two neighbouring pixels that are both on, or -1 (off) elsewhere. Bad
+pixel data faults with code 5. run FALSE ends the program and empties the port;
+a fault holds (output -1) until reset. While reset is TRUE the component stays
+idle and the port empty (run does not start a program then).
+""";
 ;;
-#define RASTER_MAX_PIXELS 8192
-#define RASTER_CHUNK 256
-#define RASTER_CHUNKS_PER_PERIOD 4
 #define RASTER_IDLE 0
 #define RASTER_RUN 1
-#define RASTER_FINISHED 2
-#define RASTER_FAULT 3
-#define RASTER_DATA_FIELD 4
+#define RASTER_FAULT 2
+#define RASTER_FLOAT_PEEK 32
+#define RASTER_INT_PEEK 10
+#define RASTER_EPS 1e-4
 
-/* Parse an optionally signed decimal number ("-1.25", "3", ".5"); 0 on success. */
-static int parse_decimal(const char *s, double *out)
+/* Peek up to max bytes of the next header field; the field's length before ';' or -1 without one. */
+static int peek_field(const hal_port_t *port, char *buf, int max, int *got)
 {
-    double value = 0, divisor = 1;
-    int neg = 0, digits = 0, point = 0;
-    if (*s == '+' || *s == '-') neg = *s++ == '-';
-    for (; *s; s++) {
-        if (*s == '.' && !point) {
-            point = 1;
-        } else if (*s >= '0' && *s <= '9') {
-            digits++;
-            value = value * 10 + (*s - '0');
-            if (point) divisor *= 10;
-        } else {
-            return -1;
-        }
-    }
-    if (!digits) return -1;
-    *out = (neg ? -value : value) / divisor;
-    return 0;
-}
-
-/* Parse an unsigned decimal integer no larger than max; 0 on success. */
-static int parse_count(const char *s, int max, int *out)
-{
-    long value = 0;
-    if (!*s) return -1;
-    for (; *s; s++) {
-        if (*s < '0' || *s > '9') return -1;
-        value = value * 10 + (*s - '0');
-        if (value > max) return -1;
-    }
-    *out = (int)value;
-    return 0;
-}
-
-/* Value of a hexadecimal digit, -1 for any other byte. */
-static int hex_value(char c)
-{
-    if (c >= '0' && c <= '9') return c - '0';
-    if (c >= 'a' && c <= 'f') return c - 'a' + 10;
-    if (c >= 'A' && c <= 'F') return c - 'A' + 10;
+    unsigned avail = hal_port_readable(port);
+    int n = avail < (unsigned)max ? (int)avail : max;
+    *got = 0;
+    if (n <= 0 || !hal_port_peek(port, buf, n)) return -1;
+    *got = n;
+    for (int i = 0; i < n; i++)
+        if (buf[i] == ';') return i;
     return -1;
 }
 
-/* Forget the program being read or run and start a fresh parse. */
-static void clear_program(struct __comp_state *__comp_inst)
+/* Read a float header field; 0 or -1. */
+static int read_float(const hal_port_t *port, double *v)
 {
-    field = 0;
-    text_len = 0;
-    nread = 0;
-    acc = 0;
-    acc_bits = 0;
-    entered = 0;
+    char buf[RASTER_FLOAT_PEEK];
+    int got, len;
+    if (peek_field(port, buf, RASTER_FLOAT_PEEK, &got) < 0) return -1;
+    len = raster_number(buf, got, v);
+    if (len == 0 || len + 1 > got) return -1;
+    return hal_port_peek_commit(port, len + 1) ? 0 : -1;
 }
 
-/* Enter the fault state with the given code. */
-static void set_fault(struct __comp_state *__comp_inst, int code)
+/* Read an integer header field; 0 or -1. */
+static int read_int(const hal_port_t *port, long *v)
 {
-    clear_program(__comp_inst);
-    st = RASTER_FAULT;
-    fault_code = code;
+    char buf[RASTER_INT_PEEK];
+    int got, len;
+    if (peek_field(port, buf, RASTER_INT_PEEK, &got) < 0) return -1;
+    len = raster_integer(buf, got, v);
+    if (len == 0 || len + 1 > got) return -1;
+    return hal_port_peek_commit(port, len + 1) ? 0 : -1;
 }
 
-/* Check and store header field `field` from the text buffer; a fault code or 0. */
-static int take_field(struct __comp_state *__comp_inst)
+/* Parse the header and check the data size; 0 or the fault code. */
+static int parse_header(struct __comp_state *__comp_inst)
 {
-    text[text_len] = 0;
-    text_len = 0;
-    switch (field) {
-    case 0:
-        return parse_decimal(text, &ppu) || !(ppu > 0) ? 1 : 0;
-    case 1:
-        return parse_decimal(text, &offset) ? 2 : 0;
-    case 2:
-        return parse_count(text, 16, &bpp) || bpp < 1 ? 3 : 0;
-    default:
-        return parse_count(text, RASTER_MAX_PIXELS, &npixels) || npixels < 1 ? 4 : 0;
-    }
-}
-
-/* Feed one header byte; a fault code or 0. */
-static int header_byte(struct __comp_state *__comp_inst, char c)
-{
-    int code;
-    if (c != ';') {
-        if (text_len >= (int)sizeof(text) - 1) return field + 1;
-        text[text_len++] = c;
-        return 0;
-    }
-    code = take_field(__comp_inst);
-    if (!code) field++;
-    return code;
-}
-
-/* Feed one hex digit of pixel data; 5 for a non-hex byte, else 0. */
-static int data_byte(struct __comp_state *__comp_inst, char c)
-{
-    int v = hex_value(c);
-    unsigned mask = (1u << bpp) - 1;
-    if (v < 0) return 5;
-    acc = (acc << 4) | (unsigned)v;
-    acc_bits += 4;
-    while (acc_bits >= bpp && nread < npixels) {
-        acc_bits -= bpp;
-        pixel[nread++] = (unsigned short)((acc >> acc_bits) & mask);
-    }
-    acc &= (1u << acc_bits) - 1;
-    if (nread == npixels) {
-        clear_program(__comp_inst);
-        st = RASTER_RUN;
-    }
+    double off, p;
+    long b, c;
+    if (read_float(program, &off)) return 1;
+    program_offset = off;
+    if (read_int(program, &b) || b <= 0 || b > 32 || b % 4) return 2;
+    bpp = (int)b;
+    if (read_float(program, &p) || !(p > 0)) return 3;
+    ppu = p;
+    if (read_int(program, &c) || c < 2) return 4;
+    count_ = (int)(c > 0x7fffffffL ? 0x7fffffffL : c);
+    if ((long long)hal_port_readable(program) != (long long)(bpp / 4) * c) return 6;
     return 0;
 }
 
-/* Parse up to n bytes; returns how many were consumed (stops at a program end or fault). */
-static unsigned parse_bytes(struct __comp_state *__comp_inst, const char *buf, unsigned n)
+/* The next pixel's value (percent, -1 off) into *v; -1 on unreadable or bad hex data. */
+static int read_pixel(struct __comp_state *__comp_inst, double *v)
 {
-    unsigned i;
-    int code;
-    for (i = 0; i < n && st != RASTER_RUN && st != RASTER_FAULT; i++) {
-        char c = buf[i];
-        if (field == 0 && text_len == 0 && (c == ' ' || c == '\t' || c == '\r' || c == '\n'))
-            continue;
-        st = RASTER_IDLE;
-        code = field < RASTER_DATA_FIELD ? header_byte(__comp_inst, c) : data_byte(__comp_inst, c);
-        if (code) set_fault(__comp_inst, code);
+    char buf[8];
+    int n = bpp / 4;
+    unsigned long long x = 0, off = (1ULL << bpp) - 1;
+    if (!hal_port_read(program, buf, n)) return -1;
+    for (int i = 0; i < n; i++) {
+        int d = raster_hex(buf[i]);
+        if (d < 0) return -1;
+        x = (x << 4) | (unsigned)d;
     }
-    return i;
+    *v = x == off ? -1.0 : 100.0 * (double)x / (double)(off - 1);
+    return 0;
 }
 
-/* Take whatever program bytes the port holds, a bounded amount per period. */
-static void read_program(struct __comp_state *__comp_inst)
+/* IDLE: clear the line outputs; start a program when run is TRUE. */
+static void st_idle(struct __comp_state *__comp_inst)
 {
-    char buf[RASTER_CHUNK];
-    int chunk;
-    for (chunk = 0; chunk < RASTER_CHUNKS_PER_PERIOD; chunk++) {
-        unsigned n = hal_port_readable(program);
-        if (n > RASTER_CHUNK) n = RASTER_CHUNK;
-        if (n == 0 || !hal_port_peek(program, buf, n)) return;
-        hal_port_peek_commit(program, parse_bytes(__comp_inst, buf, n));
-        if (st == RASTER_RUN || st == RASTER_FAULT) return;
-    }
-}
-
-/* Follow the position along the loaded line; the pass ends when it leaves after entering. */
-static void track_position(struct __comp_state *__comp_inst)
-{
-    double where = (position - offset) * ppu + 1e-9;
-    int idx;
-    if (where >= 0 && where < npixels) {
-        idx = (int)where;
-        entered = 1;
-        current_pixel = idx;
-        output = enable ? pixel[idx] * 100.0 / (double)((1u << bpp) - 1) : 0;
+    bitmap_position = 0;
+    current_pixel_value = -1;
+    previous_pixel_value = -1;
+    current_pixel_index = -1;
+    if (!run) return;
+    int code = parse_header(__comp_inst);
+    if (code) {
+        fault_code = code;
+        state = RASTER_FAULT;
         return;
     }
-    current_pixel = -1;
-    output = 0;
-    if (entered) {
-        entered = 0;
-        st = RASTER_FINISHED;
-    }
+    program_position = position;
+    state = RASTER_RUN;
 }
 
-/* Rising edge of reset: drop everything and empty the port. */
-static void do_reset(struct __comp_state *__comp_inst)
+/* RUN: read pixels up to the position and set the output. */
+static void st_run(struct __comp_state *__comp_inst)
 {
-    if (!last_reset) {
+    double bmp = (position - (program_position + program_offset)) * ppu * (program_offset < 0 ? -1 : 1) + 0.0, v;
+    bitmap_position = bmp;
+    if (!run) {
+        state = RASTER_IDLE;
         hal_port_clear(program);
-        clear_program(__comp_inst);
-        fault_code = 0;
+        return;
     }
-    st = RASTER_IDLE;
+    enabled = 1;
+    while (current_pixel_index < count_ - 1 && current_pixel_index < bmp) {
+        current_pixel_index++;
+        previous_pixel_value = current_pixel_value;
+        if (read_pixel(__comp_inst, &v)) {
+            fault_code = 5;
+            state = RASTER_FAULT;
+            return;
+        }
+        current_pixel_value = v;
+    }
+    int k = current_pixel_index;
+    if (fabs(bmp - k) < RASTER_EPS) {
+        output = current_pixel_value;
+    } else if (fabs(bmp - (k - 1)) < RASTER_EPS) {
+        output = previous_pixel_value;
+    } else if (bmp > k - 1 && bmp < k && previous_pixel_value >= 0 && current_pixel_value >= 0) {
+        fraction = bmp - (k - 1);
+        output = previous_pixel_value + fraction * (current_pixel_value - previous_pixel_value);
+    }
 }
 
-/* One period: reset, load or follow, then publish the state pins. */
 FUNCTION(_)
 {
-    current_pixel = -1;
-    output = 0;
+    output = -1;
+    enabled = 0;
     if (reset) {
-        do_reset(__comp_inst);
-    } else if (st != RASTER_RUN && st != RASTER_FAULT) {
-        read_program(__comp_inst);
+        state = RASTER_IDLE;
+        fault = 0;
+        fault_code = 0;
+        hal_port_clear(program);
+        bitmap_position = 0;
+        current_pixel_value = -1;
+        previous_pixel_value = -1;
+        current_pixel_index = -1;
+        return;
     }
-    last_reset = reset;
-    if (st == RASTER_RUN && !reset) track_position(__comp_inst);
-    state = st;
-    run = st == RASTER_RUN;
-    fault = st == RASTER_FAULT;
+    if (state == RASTER_FAULT) fault = 1;
+    else if (state == RASTER_IDLE) st_idle(__comp_inst);
+    else st_run(__comp_inst);
 }

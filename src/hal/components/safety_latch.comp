@@ -1,28 +1,62 @@
-component safety_latch "Latch an error when a value leaves its allowed range";
-pin in float error-value "Monitored value";
-pin in bit reset "A rising edge clears the latched error once the value is back in range";
-pin out bit ok "TRUE while no error is latched";
-pin out bit error "TRUE while an error is latched";
-pin out bit threshold "TRUE while error-value is outside min-value..max-value (not latched)";
-param rw float min-value = 0 "Lowest allowed value";
-param rw float max-value = 0 "Highest allowed value";
-variable int latched;
+component safety_latch "Integrating error latch: errors add harm, good periods heal, crossing a threshold raises the error";
+pin in bit error_in "The monitored error condition";
+pin in bit enable = TRUE "FALSE passes error-in straight through (count 0)";
+pin in bit reset "A rising edge clears count and the error";
+pin in bit latching = TRUE "TRUE keeps the error until a reset edge; FALSE clears it when count drops below threshold";
+pin in s32 harm = 1 "Added to count each period error-in is TRUE";
+pin in s32 heal = 1 "Taken from count each period error-in is FALSE";
+pin in s32 threshold = 100 "count at or above this raises the error";
+pin in s32 min = 0 "Lowest count";
+pin in s32 max = 1000 "Highest count";
+pin out s32 count "The integrated error";
+pin out bit error_out "TRUE while the error is raised";
+pin out bit ok_out = TRUE "NOT error-out";
 variable int old_reset;
-function _ "Check the value and update the latch";
+function _ "Integrate the error and update the latch";
 license "GPL";
 author "OpenEMC";
 description """
-Whenever error-value is below min-value or above max-value, threshold is TRUE
-and the error is latched: error becomes TRUE and ok FALSE until a rising edge on
-reset arrives while the value is inside the range.  A reset edge while the value
-is still out of range is ignored.  The error starts cleared at load time.
+Each period with enable TRUE, count grows by harm while error-in is TRUE and
+shrinks by heal while it is FALSE, held within min..max (min applied first, then
+max). When count reaches threshold, error-out goes TRUE and ok-out FALSE. With
+latching FALSE they return as soon as count is below threshold again; with
+latching TRUE only a rising edge of reset (which also sets count to 0) clears
+them. With enable FALSE, error-out follows error-in, ok-out is its opposite and
+count is 0. The arithmetic saturates at the s32 range.
 """;
 ;;
-int out_of_range = !(error_value >= min_value && error_value <= max_value);  /* NaN is out of range */
-int edge = reset && !old_reset;
-old_reset = reset;
-if (out_of_range) latched = 1;
-else if (edge) latched = 0;
-threshold = out_of_range;
-error = latched;
-ok = !latched;
+/* count + delta held in the s32 range. */
+static int latch_add(hal_s32_t c, long long delta)
+{
+    long long v = (long long)c + delta;
+    if (v > 2147483647LL) return 2147483647;
+    if (v < -2147483648LL) return -2147483647 - 1;
+    return (hal_s32_t)v;
+}
+
+FUNCTION(_)
+{
+    int edge = reset && !old_reset;
+    old_reset = reset;
+    if (!enable) {
+        error_out = error_in;
+        ok_out = !error_in;
+        count = 0;
+        return;
+    }
+    if (edge) {
+        count = 0;
+        error_out = 0;
+        ok_out = 1;
+    }
+    count = latch_add(count, error_in ? (long long)harm : -(long long)heal);
+    if (count < min) count = min;
+    if (count > max) count = max;
+    if (count >= threshold) {
+        error_out = 1;
+        ok_out = 0;
+    } else if (!latching) {
+        error_out = 0;
+        ok_out = 1;
+    }
+}

@@ -12,6 +12,7 @@ pin in bit reset "While TRUE, the phase is held at one half";
 variable double phase;
 function update "Advance the phase and compute the waveforms";
 option rtapi_app no;
+include "comp_args.h";
 include <rtapi_math.h>;
 license "GPL";
 author "OpenEMC";
@@ -52,32 +53,17 @@ FUNCTION(update) {
     cosine = cos(p * 2.0 * 3.1415927) * amp + off;
 }
 
-/* Count the names= entries given on the command line. */
-static int siggen_name_count(void) {
-    int n = 0;
-    while (n < SIGGEN_MAX_CHAN && names[n] && names[n][0]) n++;
-    return n;
-}
-
 /* Create num_chan (or one per name) siggen channels. */
 int rtapi_app_main(void) {
-    int i, r = 0, n = siggen_name_count();
+    static const comp_chan_spec_t spec = { "SIGGEN", "siggen", SIGGEN_MAX_CHAN, 1 };
+    int i, r = 0, n = comp_chan_count(&spec, num_chan, names);
     char buf[HAL_NAME_LEN + 1];
-    if (num_chan && n) {
-        rtapi_print_msg(RTAPI_MSG_ERR, "num_chan= and names= are mutually exclusive\n");
-        return -EINVAL;
-    }
-    if (!num_chan && !n) num_chan = 1;
-    if (n) num_chan = n;
-    if (num_chan < 1 || num_chan > SIGGEN_MAX_CHAN) {
-        rtapi_print_msg(RTAPI_MSG_ERR, "SIGGEN: ERROR: invalid number of channels: %d\n", num_chan);
-        return -EINVAL;
-    }
+    if (n < 0)
+        return n;
     comp_id = hal_init("siggen");
     if (comp_id < 0) return comp_id;
-    for (i = 0; i < num_chan && r == 0; i++) {
-        if (n) rtapi_snprintf(buf, sizeof(buf), "%s", names[i]);
-        else rtapi_snprintf(buf, sizeof(buf), "siggen.%d", i);
+    for (i = 0; i < n && r == 0; i++) {
+        comp_chan_name(&spec, names, i, buf, sizeof(buf));
         r = export(buf, i);
     }
     if (r) {

@@ -11,6 +11,7 @@ variable long long addval;
 variable int state;
 variable long long edges;
 option rtapi_app no;
+include "comp_args.h";
 license "GPL";
 author "OpenEMC";
 description """Load with num_chan=N (at most 8, default 1) or names=a,b,... Funct
@@ -71,34 +72,18 @@ static void simenc_update_speed(void *arg, long period)
     FOR_ALL_INSTS() simenc_speed_one(__comp_inst);
 }
 
-/* Number of names= entries given. */
-static int simenc_name_count(void)
-{
-    int n = 0;
-    while (n < SIMENC_MAX_CHAN && names[n] && names[n][0]) n++;
-    return n;
-}
-
 /* Create the channels and the two shared functs. */
 int rtapi_app_main(void)
 {
-    int i, r = 0, n = simenc_name_count();
+    static const comp_chan_spec_t spec = { "SIM_ENCODER", "sim-encoder", SIMENC_MAX_CHAN, 1 };
+    int i, r = 0, n = comp_chan_count(&spec, num_chan, names);
     char buf[HAL_NAME_LEN + 1];
-    if (num_chan && n) {
-        rtapi_print_msg(RTAPI_MSG_ERR, "num_chan= and names= are mutually exclusive\n");
-        return -EINVAL;
-    }
-    if (!num_chan && !n) num_chan = 1;
-    if (n) num_chan = n;
-    if (num_chan < 1 || num_chan > SIMENC_MAX_CHAN) {
-        rtapi_print_msg(RTAPI_MSG_ERR, "SIM_ENCODER: ERROR: invalid num_chan: %d\n", num_chan);
-        return -EINVAL;
-    }
+    if (n < 0)
+        return n;
     comp_id = hal_init("sim_encoder");
     if (comp_id < 0) return comp_id;
-    for (i = 0; i < num_chan && r == 0; i++) {
-        if (n) rtapi_snprintf(buf, sizeof(buf), "%s", names[i]);
-        else rtapi_snprintf(buf, sizeof(buf), "sim-encoder.%d", i);
+    for (i = 0; i < n && r == 0; i++) {
+        comp_chan_name(&spec, names, i, buf, sizeof(buf));
         r = export(buf, i);
     }
     if (r == 0) r = hal_export_funct("sim-encoder.make-pulses", simenc_make_pulses, 0, 0, 0, comp_id);

@@ -1,4 +1,4 @@
-/* supply.c: constant sources; q/_q follow param d and variable/_variable follow param value. */
+/* supply.c: constant sources; q/_q follow the d pin and variable/_variable follow the value pin. */
 #include "rtapi.h"
 #include "rtapi_app.h"
 #include "rtapi_string.h"
@@ -8,31 +8,31 @@
 
 MODULE_LICENSE("GPL");
 MODULE_AUTHOR("OpenEMC");
-MODULE_DESCRIPTION("Outputs from params: q = d, _q = !d, variable = value, _variable = -value");
+MODULE_DESCRIPTION("Constant sources: q = d, _q = !d, variable = value, _variable = -value");
 
 #define SUPPLY_MAX_CHAN 8
 
 static int num_chan = 1;
 RTAPI_MP_INT(num_chan, "number of supplies (1..8)");
 
-/* Pins and params of one supply channel. */
+/* Pins of one supply channel. */
 typedef struct {
-    hal_bit_t *q, *q_not, d;
-    hal_float_t *variable, *variable_neg, value;
+    hal_bit_t *q, *q_not, *d;
+    hal_float_t *variable, *variable_neg, *value;
 } supply_t;
 
-/* Funct supply.N.update: copy and invert the params. */
+/* Funct supply.N.update: copy and invert the d and value pins. */
 static void supply_update(void *arg, long period)
 {
     supply_t *s = arg;
     (void)period;
-    *s->q = s->d;
-    *s->q_not = !s->d;
-    *s->variable = s->value;
-    *s->variable_neg = -s->value;
+    *s->q = *s->d;
+    *s->q_not = !*s->d;
+    *s->variable = *s->value;
+    *s->variable_neg = -*s->value;
 }
 
-/* Create the pins, params and funct of channel n in component comp_id. */
+/* Create the pins and funct of channel n in component comp_id. */
 static int supply_export(int comp_id, int n)
 {
     char name[HAL_NAME_LEN + 1];
@@ -43,9 +43,10 @@ static int supply_export(int comp_id, int n)
     if (r == 0) r = hal_pin_float_newf(HAL_OUT, &s->variable, comp_id, "supply.%d.variable", n);
     if (r == 0)
         r = hal_pin_float_newf(HAL_OUT, &s->variable_neg, comp_id, "supply.%d._variable", n);
-    if (r == 0) r = hal_param_bit_newf(HAL_RW, &s->d, comp_id, "supply.%d.d", n);
-    if (r == 0) r = hal_param_float_newf(HAL_RW, &s->value, comp_id, "supply.%d.value", n);
+    if (r == 0) r = hal_pin_bit_newf(HAL_IO, &s->d, comp_id, "supply.%d.d", n);
+    if (r == 0) r = hal_pin_float_newf(HAL_IO, &s->value, comp_id, "supply.%d.value", n);
     if (r != 0) return r;
+    *s->q_not = 1; /* the inverse of d, which starts FALSE */
     rtapi_snprintf(name, sizeof(name), "supply.%d.update", n);
     return hal_export_funct(name, supply_update, s, 1, 0, comp_id);
 }

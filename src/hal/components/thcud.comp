@@ -9,13 +9,13 @@ pin in bit enable "TRUE allows height corrections";
 pin in float z-pos-in "Z motor position command from motion";
 pin out float z-pos-out "Z motor position command with the height correction added";
 pin out float z-fb-out "Z position feedback for motion (the command without the correction)";
-pin out float cur-vel "Copy of current-vel";
-pin out float req-vel "Copy of requested-vel";
+pin out float cur-offset "The height correction now applied";
 pin out bit vel-status "TRUE while the machine runs within velocity-tol of the requested velocity";
-pin out bit removing-offset "TRUE while the height correction is being taken back out";
+pin out bit removing-offset "TRUE while the torch is off and a correction is left to take out";
+pin in float correction-vel "Height change per servo period while correcting, in machine units";
 param rw float velocity-tol "Allowed shortfall of current-vel below requested-vel, in percent";
-param rw float correction-vel "Height change per servo period while correcting or removing the correction, in machine units";
 variable double offset;
+variable double last_z;
 option singleton yes;
 function _ "Update the height correction";
 license "GPL";
@@ -23,11 +23,11 @@ author "OpenEMC";
 description """
 While enable, torch-on and arc-ok are TRUE and the machine is at cut speed
 (vel-status), every period with torch-up adds correction-vel to the Z
-correction and every period with torch-down subtracts it.  When any of those
-conditions fails, corrections stop; when the torch is off or the component is
-disabled the correction is taken back out at correction-vel per period (never
-past zero).  z-pos-out = z-pos-in + correction; z-fb-out = z-pos-in, so motion
-never sees a following error from the correction.
+correction and every period with torch-down subtracts it.  While enabled with the
+torch off, the correction is taken out as Z moves up, never faster than Z moves
+and never past zero.  Disabled, the correction is dropped and Z passes through.
+z-pos-out = z-pos-in + correction; z-fb-out = z-pos-in, so motion never sees a
+following error from the correction.
 """;
 ;;
 #include "rtapi_math.h"
@@ -45,22 +45,23 @@ static double thcud_towards_zero(double value, double step)
     return value > 0 ? value - step : value + step;
 }
 
-/* Apply or remove the height correction and copy the velocities. */
+/* Apply, take out or drop the height correction. */
 FUNCTION(_)
 {
     double step = correction_vel == correction_vel ? fabs(correction_vel) : 0.0;  /* NaN: no correction */
-    int at_speed = thcud_at_speed(current_vel, requested_vel, velocity_tol);
-    cur_vel = current_vel;
-    req_vel = requested_vel;
-    vel_status = at_speed;
-    if (enable && torch_on) {
-        removing_offset = 0;
-        if (arc_ok && at_speed && torch_up && !torch_down) offset += step;
-        if (arc_ok && at_speed && torch_down && !torch_up) offset -= step;
-    } else {
-        removing_offset = offset != 0.0;
-        offset = thcud_towards_zero(offset, step);
+    double dz = z_pos_in - last_z;
+    vel_status = thcud_at_speed(current_vel, requested_vel, velocity_tol);
+    last_z = z_pos_in;
+    if (!enable) {
+        offset = 0.0;
+    } else if (torch_on) {
+        if (arc_ok && vel_status && torch_up && !torch_down) offset += step;
+        if (arc_ok && vel_status && torch_down && !torch_up) offset -= step;
+    } else if (dz > 0) {
+        offset = thcud_towards_zero(offset, dz);
     }
+    removing_offset = enable && !torch_on && offset != 0.0;
+    cur_offset = offset;
     z_pos_out = z_pos_in + offset;
     z_fb_out = z_pos_in;
 }

@@ -2,14 +2,16 @@ component weighted_sum "Weighted sum of groups of bit inputs";
 pin in bit bit.#.in[32 : personality] "Bit inputs";
 pin in bit hold "When TRUE, sum keeps its value";
 pin out s32 sum "offset plus the weights of all TRUE inputs";
-param rw s32 bit.#.weight[32 : personality] "Weight of each input (default 2^M)";
-param rw s32 offset "Added to the sum";
+pin io s32 bit.#.weight[32 : personality] "Weight of each input (preset 2^M)";
+pin io s32 offset "Added to the sum";
 option rtapi_app no;
 option post_export yes;
 license "GPL";
 author "OpenEMC";
-description """Load with wsum_sizes=N0,N1,... (at most 8 groups of 1 to 32 bits). Group G has pins
-wsum.G.bit.M.in, wsum.G.hold, wsum.G.sum; one funct process_wsums updates every group.""";
+description """Load with wsum_sizes=N0,N1,... (at most 8 summers of 1 to 32 bits; the list ends at
+the first entry not given). Summer G has pins wsum.G.bit.M.in, wsum.G.bit.M.weight, wsum.G.offset,
+wsum.G.hold, wsum.G.sum; one funct process_wsums updates every summer. While hold is TRUE sum
+keeps its value; otherwise sum is offset plus the weights of the TRUE bits (32-bit wrap-around).""";
 ;;
 #define WSUM_MAX_GROUPS 8
 static int wsum_sizes[WSUM_MAX_GROUPS] = { [0 ... WSUM_MAX_GROUPS - 1] = -1 };
@@ -49,13 +51,14 @@ int rtapi_app_main(void)
     char buf[HAL_NAME_LEN + 1];
     while (n < WSUM_MAX_GROUPS && wsum_sizes[n] != -1) n++;
     if (n == 0) {
-        rtapi_print_msg(RTAPI_MSG_ERR, "WEIGHTED_SUM: ERROR: no groups configured (wsum_sizes=)\n");
+        rtapi_print_msg(RTAPI_MSG_ERR, "WEIGHTED_SUM: ERROR: no summers specified\n");
         return -EINVAL;
     }
     for (g = 0; g < n; g++) {
         if (wsum_sizes[g] < 1 || wsum_sizes[g] > 32) {
-            rtapi_print_msg(RTAPI_MSG_ERR, "WEIGHTED_SUM: ERROR: group %d size %d not in 1..32\n",
-                            g, wsum_sizes[g]);
+            rtapi_print_msg(RTAPI_MSG_ERR,
+                            "WEIGHTED_SUM: ERROR: Invalid number of bits '%i' for summer %i%s\n",
+                            wsum_sizes[g], g, wsum_sizes[g] > 32 ? " (at most 32)" : "");
             return -EINVAL;
         }
     }
@@ -65,7 +68,7 @@ int rtapi_app_main(void)
         rtapi_snprintf(buf, sizeof(buf), "wsum.%d", g);
         r = export(buf, g, wsum_sizes[g]);
     }
-    if (r == 0) r = hal_export_funct("process_wsums", wsum_process, 0, 0, 0, comp_id);
+    if (r == 0) r = hal_export_funct("process_wsums", wsum_process, 0, 1, 0, comp_id);
     if (r) {
         hal_exit(comp_id);
         return r;

@@ -94,6 +94,10 @@ def gen_names_loop(comp, out):
     out.append('    for (k = 0; ; k++) {')
     out.append("        if (names[k] == ',' || names[k] == '\\0') {")
     out.append("            buf[j] = '\\0';")
+    out.append('            if (j == 0) {')
+    out.append('                rtapi_print_msg(RTAPI_MSG_ERR, "names[%d] is invalid (empty string)\\n", i);')
+    out.append('                return -EINVAL;')
+    out.append('            }')
     gen_export_call(comp, out, '            ')
     out.append("            if (names[k] == '\\0') break;")
     out.append('            j = 0;')
@@ -104,6 +108,11 @@ def gen_names_loop(comp, out):
     out.append("                while (names[e] && names[e] != ',') e++;")
     out.append('                rtapi_print_msg(RTAPI_MSG_ERR, "names: \\"%.*s\\" too long\\n", '
                '(int)(e - k + j), names + k - j);')
+    out.append('                return -EINVAL;')
+    out.append('            }')
+    out.append('            if ((unsigned char)names[k] <= \' \' || names[k] == 0x7f) {')
+    out.append('                rtapi_print_msg(RTAPI_MSG_ERR, "names[%d] contains a blank or control '
+               'character\\n", i);')
     out.append('                return -EINVAL;')
     out.append('            }')
     out.append('            buf[j++] = names[k];')
@@ -173,6 +182,9 @@ def gen_create_instances(comp, out):
     # Unlike the reference, a bad combination still reaches hal_exit (no stale comp).
     out.append('    if (count && names[0]) {')
     out.append('        rtapi_print_msg(RTAPI_MSG_ERR, "count= and names= are mutually exclusive\\n");')
+    out.append('        r = -EINVAL;')
+    out.append('    } else if (count < 0) {')
+    out.append('        rtapi_print_msg(RTAPI_MSG_ERR, "count=%d: the count must not be negative\\n", count);')
     out.append('        r = -EINVAL;')
     out.append('    } else {')
     out.append('        if (!count && !names[0]) count = default_count;')

@@ -4,7 +4,8 @@
 top=$(cd "$(dirname "$0")/../../.." && pwd)
 . "$top/scripts/rip-environment" >/dev/null 2>&1
 export OPENEMC_INSTANCE=${OPENEMC_INSTANCE:-201}
-trap 'realtime stop >/dev/null 2>&1' EXIT
+. "$top/tests/lib/testmods.sh"
+trap tm_cleanup EXIT
 realtime start 2>/dev/null || exit 1
 halcmd loadrt hal_bench count=1000 period=1000000 || exit 1
 halcmd start

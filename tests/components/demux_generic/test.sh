@@ -1,6 +1,6 @@
 #!/bin/bash
-# demux_generic: config errors, pins of each type and size, routing by sel-int and sel-bits.
-for args in "" "config=bx4" "config=bf0" "config=bf2000"; do
+# demux_generic: config errors (size 2000 caps at 1024), pins of each type and size, routing by sel-int and sel-bits.
+for args in "" "config=bx4" "config=bf0" "config=b1" "config=bf2000"; do
     echo "== $args"
     echo "load demux_generic $args" | "$EMC2_HOME/objects/unit/comptest"
 done

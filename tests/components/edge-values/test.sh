@@ -91,7 +91,7 @@ set biquad.0.enable 1
 cycle 2
 get biquad.0.valid biquad.0.out
 S
-echo "ilowpass: a result beyond s32 saturates instead of wrapping"
+echo "ilowpass: a result beyond s32 wraps (low 32 bits of the 64-bit result, as LinuxCNC)"
 run <<'S'
 load ilowpass
 functs ilowpass.0
@@ -144,7 +144,7 @@ set knob2float.0.counts -2147483648
 cycle 1
 get knob2float.0.out
 S
-echo "mux_generic: a selection beyond 2^31 is out of range and leaves out alone"
+echo "mux_generic: a selection beyond 2^31 picks the last input"
 run <<'S'
 load mux_generic config=ff4
 functs mux-gen.00
@@ -159,15 +159,15 @@ echo "scaled_s32_sums: a sum beyond s32 saturates"
 run <<'S'
 load scaled_s32_sums
 functs scaled-s32-sums.0
-set scaled-s32-sums.0.input0 2000000000
+set scaled-s32-sums.0.in0 2000000000
 set scaled-s32-sums.0.scale0 2
 cycle 1
-get scaled-s32-sums.0.output
+get scaled-s32-sums.0.out-s
 set scaled-s32-sums.0.scale0 -2
 cycle 1
-get scaled-s32-sums.0.output
+get scaled-s32-sums.0.out-s
 S
-echo "xhc_hb04_util: an inf scale leaves the filter output where it was"
+echo "xhc_hb04_util: an inf scale saturates the output and leaves the filter unharmed"
 run <<'S'
 load xhc_hb04_util
 functs xhc-hb04-util.0
@@ -191,16 +191,19 @@ set wsum.0.bit.0.in 1
 cycle 1
 get wsum.0.sum
 S
-echo "laserpower: a NaN current velocity turns the laser off"
+echo "laserpower: a NaN current velocity scales to 0 (power = min-power)"
 run <<'S'
 load laserpower
 functs laserpower.0
-set laserpower.0.enable 1
-set laserpower.0.req-power 50
-set laserpower.0.req-vel 100
-set laserpower.0.cur-vel nan
+set laserpower.0.enabled 1
+set laserpower.0.raster-mode 1
+set laserpower.0.raster-power 50
+set laserpower.0.max-power 100
+set laserpower.0.min-power 2
+set laserpower.0.req-velocity 100
+set laserpower.0.cur-velocity nan
 cycle 1
-get laserpower.0.output
+get laserpower.0.power laserpower.0.vel-scale
 S
 echo "mux16: out-s saturates beyond s32 and gives 0 for NaN"
 run <<'S'
@@ -216,15 +219,16 @@ set mux16.0.in00 nan
 cycle 1
 get mux16.0.out-s
 S
-echo "safety_latch: NaN is out of range and latches"
+echo "safety_latch: harm past the s32 range saturates the count instead of wrapping"
 run <<'S'
 load safety_latch
 functs safety-latch.0
-set safety-latch.0.min-value -1
-set safety-latch.0.max-value 1
-set safety-latch.0.error-value nan
-cycle 1
-get safety-latch.0.ok safety-latch.0.error
+set safety-latch.0.max 2147483647
+set safety-latch.0.threshold 2147483647
+set safety-latch.0.harm 2147483647
+set safety-latch.0.error-in 1
+cycle 2
+get safety-latch.0.count safety-latch.0.ok-out safety-latch.0.error-out
 S
 echo "demux_generic: NaN to an s32 output is 0, a huge float saturates"
 run <<'S'
@@ -368,7 +372,7 @@ set thcud.torch-on 0
 cycle 1
 get thcud.z-pos-out thcud.removing-offset
 S
-echo "plasmac: a NaN probe-start-height holds the torch instead of driving it down"
+echo "plasmac: a NaN probe-start-height probes from the current height"
 run <<'S'
 load plasmac
 functs plasmac
@@ -380,6 +384,8 @@ set plasmac.axis-z-position 50
 set plasmac.setup-feed-rate 60000
 set plasmac.probe-feed-rate 600
 set plasmac.probe-start-height nan
+set plasmac.homed 1
+set plasmac.units-per-mm 1
 set plasmac.pierce-height 4
 set plasmac.cut-height 1.5
 set plasmac.mode 1

@@ -16,6 +16,10 @@ static char **param_strings;
 static size_t n_param_strings;
 extern long long fake_clock_ns;
 int comptest_kins_dispatch(void *module, int argc, char **argv);
+int comptest_home_dispatch(void *module, int argc, char **argv);
+int comptest_follow_dispatch(int argc, char **argv);
+void comptest_follow_apply(void);
+void comptest_follow_clear(void);
 
 /* Copy a string parameter value, remembering it so main can free it at exit. */
 static char *keep_string(const char *value)
@@ -103,6 +107,7 @@ static void cmd_load(int argc, char **argv)
     for (int i = 2; i < argc; i++)
         if (set_modparam(argv[i]) < 0)
             return;
+    fake_new_load();
     int (*app_main)(void) = (int (*)(void))dlsym(module, "rtapi_app_main");
     int r = app_main ? app_main() : -1;
     printf("rtapi_app_main: %d%s%s\n", r, fake_ready() ? " ready" : "",
@@ -174,6 +179,7 @@ static void one_cycle(void)
     for (int i = 0; i < n_cycle; i++)
         cycle_list[i]->funct(cycle_list[i]->arg, period_ns);
     fake_clock_ns += period_ns;
+    comptest_follow_apply();
 }
 
 /* functs F...: set the list of functs one cycle calls. */
@@ -233,23 +239,47 @@ static void dispatch(int argc, char **argv)
     } else if (!strcmp(c, "unload")) {
         void (*app_exit)(void) = (void (*)(void))dlsym(module, "rtapi_app_exit");
         if (app_exit) app_exit();
+        comptest_follow_clear();
         printf("rtapi_app_exit:%s\n", fake_exited() ? " exited" : "");
-    } else if (!comptest_kins_dispatch(module, argc, argv))
+        dlclose(module);  /* the next load starts from fresh module variables */
+        module = NULL;
+    } else if (!comptest_kins_dispatch(module, argc, argv) && !comptest_home_dispatch(module, argc, argv)
+               && !comptest_follow_dispatch(argc, argv))
         printf("unknown command '%s'\n", c);
+}
+
+/* Split line in place into words as halcmd does: blanks separate, double quotes group (and vanish),
+ * '#' outside quotes starts a comment. Returns the number of words. */
+static int split_words(char *line, char **argv)
+{
+    int argc = 0, quoted = 0;
+    char *out = line, *in = line;
+    while (*in && argc < MAX_WORDS) {
+        while (*in == ' ' || *in == '\t' || *in == '\r' || *in == '\n')
+            in++;
+        if (!*in || *in == '#')
+            break;
+        argv[argc++] = out;
+        for (; *in && (quoted || !strchr(" \t\r\n", *in)); in++) {
+            if (*in == '"')
+                quoted = !quoted;
+            else
+                *out++ = *in;
+        }
+        if (*in)
+            in++;
+        *out++ = '\0';
+    }
+    return argc;
 }
 
 /* Read script lines from stdin and run them. */
 int main(void)
 {
-    char line[4096], *argv[MAX_WORDS], *save;
+    char line[4096], *argv[MAX_WORDS];
     setvbuf(stdout, NULL, _IOLBF, 0);
     while (fgets(line, sizeof(line), stdin)) {
-        int argc = 0;
-        char *hash = strchr(line, '#');
-        if (hash) *hash = '\0';
-        for (char *t = strtok_r(line, " \t\r\n", &save); t && argc < MAX_WORDS;
-             t = strtok_r(NULL, " \t\r\n", &save))
-            argv[argc++] = t;
+        int argc = split_words(line, argv);
         if (argc)
             dispatch(argc, argv);
     }

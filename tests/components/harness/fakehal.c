@@ -54,6 +54,13 @@ int fake_ready(void) { return comp_ready; }
 /* Whether hal_exit was called. */
 int fake_exited(void) { return comp_exited; }
 
+/* A module is about to be loaded: nothing is ready or exited yet. */
+void fake_new_load(void)
+{
+    comp_ready = 0;
+    comp_exited = 0;
+}
+
 /* Register a new item; returns it or NULL on duplicates/overflow. */
 static fake_item_t *add_item(const char *name, fake_kind_t kind, int comp_id)
 {
@@ -76,11 +83,25 @@ static fake_item_t *add_item(const char *name, fake_kind_t kind, int comp_id)
     return it;
 }
 
+/* TRUE when [p, p + n) lies in one hal_malloc block (real HAL refuses pin and param storage elsewhere). */
+static int in_hal_memory(const void *p, size_t n);
+
+/* The real HAL's refusal of storage outside HAL memory. */
+static int outside_hal_memory(const char *name, const void *p, size_t n)
+{
+    if (in_hal_memory(p, n))
+        return 0;
+    printf("fakehal: '%s': data address not in HAL memory\n", name);
+    return 1;
+}
+
 /* Create a pin whose pointer lives at ptr. */
 static int new_pin(hal_type_t t, int dir, void **ptr, int id, const char *fmt, va_list ap)
 {
     char name[256];
     vsnprintf(name, sizeof(name), fmt, ap);
+    if (outside_hal_memory(name, ptr, sizeof(*ptr)))
+        return -22;
     fake_item_t *it = add_item(name, FAKE_PIN, id);
     if (!it)
         return -22;
@@ -97,6 +118,8 @@ static int new_param(hal_type_t t, int dir, void *data, int id, const char *fmt,
 {
     char name[256];
     vsnprintf(name, sizeof(name), fmt, ap);
+    if (outside_hal_memory(name, data, 1))
+        return -22;
     fake_item_t *it = add_item(name, FAKE_PARAM, id);
     if (!it)
         return -22;
@@ -121,6 +144,13 @@ static int new_param(hal_type_t t, int dir, void *data, int id, const char *fmt,
         va_end(ap); return r; \
     }
 
+/* hal_pin_<type>_new(name, dir, ptr, id): the plain-name forms. */
+#define FAKE_PIN_NEW(tn, T, ctype) \
+    int hal_pin_##tn##_new(const char *name, hal_pin_dir_t dir, ctype **p, int id) \
+    { \
+        return hal_pin_new(name, T, dir, (void **)p, id); \
+    }
+
 FAKE_PIN_NEWF(bit, HAL_BIT, hal_bit_t)
 FAKE_PIN_NEWF(float, HAL_FLOAT, hal_float_t)
 FAKE_PIN_NEWF(s32, HAL_S32, hal_s32_t)
@@ -134,6 +164,12 @@ FAKE_PARAM_NEWF(s32, HAL_S32, hal_s32_t)
 FAKE_PARAM_NEWF(u32, HAL_U32, hal_u32_t)
 FAKE_PARAM_NEWF(s64, HAL_S64, hal_s64_t)
 FAKE_PARAM_NEWF(u64, HAL_U64, hal_u64_t)
+FAKE_PIN_NEW(bit, HAL_BIT, hal_bit_t)
+FAKE_PIN_NEW(float, HAL_FLOAT, hal_float_t)
+FAKE_PIN_NEW(s32, HAL_S32, hal_s32_t)
+FAKE_PIN_NEW(u32, HAL_U32, hal_u32_t)
+FAKE_PIN_NEW(s64, HAL_S64, hal_s64_t)
+FAKE_PIN_NEW(u64, HAL_U64, hal_u64_t)
 
 /* Register a funct plus its .time pin and .tmax/.tmax-increased params. */
 int hal_export_funct(const char *name, void (*funct)(void *, long), void *arg,
@@ -170,6 +206,9 @@ int hal_init(const char *name)
 /* Mark the component ready. */
 int hal_ready(int comp_id) { (void)comp_id; comp_ready = 1; return 0; }
 
+/* Mark the component not ready again (kinematics that add pins at their first type query). */
+int hal_unready(int comp_id) { (void)comp_id; comp_ready = 0; return 0; }
+
 /* Record that the component was removed and drop its pins, params and functs. */
 int hal_exit(int comp_id)
 {
@@ -190,6 +229,7 @@ int hal_exit(int comp_id)
 /* One hal_malloc block: kept on a list, as HAL memory lives until HAL goes away. */
 typedef struct fake_block {
     struct fake_block *next;
+    size_t size;
     max_align_t data[];
 } fake_block_t;
 
@@ -202,8 +242,18 @@ void *hal_malloc(long int size)
     if (!b)
         return NULL;
     b->next = blocks;
+    b->size = (size_t)size;
     blocks = b;
     return b->data;
+}
+
+static int in_hal_memory(const void *p, size_t n)
+{
+    const char *c = p;
+    for (fake_block_t *b = blocks; b; b = b->next)
+        if (c >= (const char *)b->data && c + n <= (const char *)b->data + b->size)
+            return 1;
+    return 0;
 }
 
 /* Free every hal_malloc block (when the fake HAL shuts down). */
@@ -224,10 +274,24 @@ int hal_set_constructor(int comp_id, hal_constructor_t make)
 }
 
 /* Messages go to stdout so tests can compare them. */
+/* The message level: errors only unless a component raises it (plasmac's debug-print). */
+static int fake_msg_level = RTAPI_MSG_ERR;
+
+int rtapi_set_msg_level(int level)
+{
+    fake_msg_level = level;
+    return 0;
+}
+
+int rtapi_get_msg_level(void)
+{
+    return fake_msg_level;
+}
+
 void rtapi_print_msg(msg_level_t level, const char *fmt, ...)
 {
     va_list ap;
-    if (level > RTAPI_MSG_ERR)
+    if ((int)level > fake_msg_level)
         return;
     va_start(ap, fmt);
     vprintf(fmt, ap);
@@ -278,6 +342,8 @@ size_t rtapi_strlcpy(char *dst, const char *src, size_t size)
 /* Generic pin creation by name and type. */
 int hal_pin_new(const char *name, hal_type_t type, hal_pin_dir_t dir, void **data_ptr_addr, int comp_id)
 {
+    if (outside_hal_memory(name, data_ptr_addr, sizeof(*data_ptr_addr)))
+        return -22;
     fake_item_t *it = add_item(name, FAKE_PIN, comp_id);
     if (!it)
         return -22;

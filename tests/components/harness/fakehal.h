@@ -30,6 +30,8 @@ void *fake_cell(fake_item_t *it);
 /* Ready flag of the last component, and whether hal_exit was called. */
 int fake_ready(void);
 int fake_exited(void);
+/* A module is about to be loaded: clear both flags. */
+void fake_new_load(void);
 /* Free all hal_malloc memory (the fake HAL shuts down). */
 void fake_free_memory(void);
 #endif

@@ -1,11 +1,12 @@
-"""raster_test.py: writes raster programs into a HAL port and traces raster.0 one period per row."""
+"""raster_test.py: writes raster programs (offset;bpp;ppu;count;pixels) into a HAL port, drives run and
+reset, and traces raster.0 one period per row."""
 import subprocess
 import sys
 import time
 
 import hal
 
-COLUMNS = "position state run fault fault-code current-pixel output"
+COLUMNS = "position state enabled fault fault-code current-pixel-index bitmap-position output"
 
 
 def halcmd(*args):
@@ -24,7 +25,7 @@ def wait_streamer_empty():
 
 
 def scenario(port, title, program, rows, end_reset=True):
-    """Write PROGRAM, stream ROWS (position, reset, enable), print one sampled line per row.
+    """Write PROGRAM, stream ROWS (position, reset, run), print one sampled line per row.
 
     Two rows follow: one sampled (so halsampler returns only after raster has seen its reset
     value) and one unsampled with the same reset, which stops the sampler."""
@@ -42,44 +43,40 @@ def scenario(port, title, program, rows, end_reset=True):
     wait_streamer_empty()
     halcmd("stop")
     for row, line in zip(rows, out.splitlines()):
-        flags = (" reset" if row[1] else "") + ("" if row[2] else " disabled")
+        flags = (" reset" if row[1] else "") + ("" if row[2] else " no-run")
         print(line.rstrip() + flags)
 
 
 def passes(port):
-    """Forward and reverse passes, queued programs, long and split programs."""
-    scenario(port, "forward pass, 4 bits per pixel: 0 F 8 A 3 from 1.0, 2 pixels/unit", "2;1.0;4;5;0F8A3",
-             [(0.5, 0, 1), (1.25, 0, 1), (1.75, 0, 1), (2.25, 0, 1), (2.4, 0, 0), (2.75, 0, 1),
-              (3.25, 0, 1), (3.6, 0, 1), (3.7, 0, 1)])
-    scenario(port, "reverse pass, 1 bit per pixel (A5), then the queued 8-bit program runs",
-             "10;-0.4;1;8;A5\n2;0;8;2;FF80",
-             [(x / 100.0, 0, 1) for x in range(45, -46, -10)] +
-             [(-0.45, 0, 1), (0.25, 0, 1), (0.75, 0, 1), (1.2, 0, 1)])
-    digits = ("0123456789ABCDEF" * 69)[:1100]
-    scenario(port, "1100 pixels: more than 1024 bytes, loaded over two periods", "100;0;4;1100;" + digits,
-             [(10.985, 0, 1), (10.985, 0, 1), (0.005, 0, 1), (5.005, 0, 1)])
-    scenario(port, "16 bits per pixel; reset while running drops the program", "1;0;16;2;FFFF8000",
-             [(0.5, 0, 1), (1.5, 0, 1), (1.5, 1, 1), (1.5, 0, 1)])
-    scenario(port, "program in three pieces: '4;0.'", "4;0.", [(0.1, 0, 1), (0.1, 0, 1)], False)
-    scenario(port, "second piece '0;2;4;E'", "0;2;4;E", [(0.1, 0, 1)], False)
-    scenario(port, "last piece '4': 2-bit pixels 3 2 1 0", "4",
-             [(0.1, 0, 1), (0.3, 0, 1), (0.6, 0, 1), (0.9, 0, 1), (1.1, 0, 1)])
-    scenario(port, "whitespace before a program is skipped", "\n\r\t 1;0;4;1;F", [(0.5, 0, 1)])
+    """Forward and reverse lines, interpolation, off pixels, the end of the line, run dropped."""
+    scenario(port, "forward, 4 bits per pixel: 0 F 8 A 3 (0%, off, 57.1%, 71.4%, 21.4%), 2 pixels/unit",
+             "0;4;2;5;0F8A3",
+             [(1.0, 0, 1), (1.0, 0, 1), (1.25, 0, 1), (1.5, 0, 1), (1.75, 0, 1), (2.0, 0, 1),
+              (2.25, 0, 1), (3.0, 0, 1), (3.5, 0, 1), (3.5, 0, 0)])
+    scenario(port, "negative offset: swept downward from 1 below the start, 8 bits 00 FF 80",
+             "-1;8;10;3;00FF80",
+             [(5.0, 0, 1), (4.05, 0, 1), (4.0, 0, 1), (3.95, 0, 1), (3.8, 0, 1), (3.8, 0, 0)])
+    digits = ("0123456789ABCDE" * 80)[:1100]
+    scenario(port, "1100 pixels from 0.5, 100 pixels/unit", "0.5;4;100;1100;" + digits,
+             [(0.0, 0, 1), (0.5, 0, 1), (0.6, 0, 1), (11.49, 0, 1), (11.49, 0, 0)])
+    scenario(port, "32 bits per pixel", "0;32;1;2;FFFFFFFE7FFFFFFF",
+             [(0.0, 0, 1), (0.0, 0, 1), (0.5, 0, 1), (1.0, 0, 1), (1.0, 0, 0)])
+    scenario(port, "reset while running: idle, the port emptied", "0;4;1;2;E0",
+             [(0.0, 0, 1), (0.0, 0, 1), (0.0, 1, 1), (0.0, 0, 0)])
 
 
 def faults(port):
-    """Malformed programs: fault state and code until reset, which empties the port."""
-    bad = [("0;0;4;2;00", "pixels per unit 0"), ("-1;0;4;2;00", "negative pixels per unit"),
-           ("1" * 40 + ";0;4;2;00", "field too long"), ("1e3;0;4;2;00", "exponent"),
-           ("1;1.2.3;4;2;00", "two decimal points"), ("1;;4;2;00", "empty offset"),
-           ("1;0;0;2;00", "0 bits per pixel"), ("1;0;17;2;00", "17 bits per pixel"),
-           ("1;0;4.0;2;00", "fractional bits per pixel"), ("1;0;4;0;", "0 pixels"),
-           ("1;0;4;8193;", "8193 pixels"), ("1;0;4;-2;", "negative count"),
-           ("1;0;4;2;0 0", "space in pixel data"),
-           ("1;0;4;3;0G01;0;4;2;FF", "bad hex digit; the program after it is discarded by reset")]
+    """Malformed programs: fault code at once, fault one period later, until reset."""
+    bad = [("x;4;1;2;00", "offset not a number"), ("1" * 40 + ";4;1;2;00", "offset field too long"),
+           ("0;3;1;2;00", "3 bits per pixel"), ("0;36;1;2;00", "36 bits per pixel"),
+           ("0;4;0;2;00", "0 pixels per unit"), ("0;4;-1;2;00", "negative pixels per unit"),
+           ("0;4;1;1;0", "1 pixel"), ("0;4;1;3;00", "2 pixels for a count of 3"),
+           ("0;4;1;2;000", "3 pixels for a count of 2")]
     for program, why in bad:
         scenario(port, "bad program (%s): %r" % (why, program), program,
-                 [(0.5, 0, 1), (0.5, 0, 1), (0.5, 1, 1), (0.5, 0, 1)])
+                 [(0.0, 0, 1), (0.0, 0, 1), (0.0, 1, 0), (0.0, 0, 0)])
+    scenario(port, "bad hex digit: found when the pixel is read", "0;4;1;2;0G",
+             [(0.0, 0, 1), (0.0, 0, 1), (0.5, 0, 1), (0.5, 0, 1), (0.5, 1, 0), (0.5, 0, 0)])
 
 
 def main():

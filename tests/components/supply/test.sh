@@ -1,6 +1,6 @@
 #!/bin/bash
-# supply: channel limits, pin names with a leading underscore, d and value as
-# params (not pins), and the update funct.
+# supply: channel limits, pin names with a leading underscore (_q starts TRUE), d and value as
+# I/O pins, and the update funct.
 for args in "num_chan=0" "num_chan=9"; do
     echo "== $args"
     echo "load supply $args" | "$EMC2_HOME/objects/unit/comptest"

@@ -1,7 +1,8 @@
 #!/bin/bash
 # More than 64 rtapi ids and tasks in rtapi_app: 200 components from one module,
 # then 75 threads (each a task plus an id for its __<thread> pseudo component).
-trap 'realtime stop >/dev/null 2>&1' EXIT
+. ../../lib/testmods.sh
+trap tm_cleanup EXIT
 realtime start 2>/dev/null || exit 1
 halcmd loadrt hal_test_many count=200 || exit 1
 echo "components: $(halcmd list comp | tr ' ' '\n' | grep -c '^hal_test_many\.')"

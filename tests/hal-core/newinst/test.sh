@@ -2,7 +2,8 @@
 # rtapi_app newinst: a registered constructor creates pins for the new instance name;
 # unknown components, components without a constructor and duplicates are refused.
 err=$(mktemp)
-trap 'realtime stop >/dev/null 2>&1; rm -f "$err"' EXIT
+. ../../lib/testmods.sh
+trap 'tm_cleanup; rm -f "$err"' EXIT
 realtime start 2>"$err" || exit 1
 halcmd loadrt hal_test_ctor || exit 1
 rtapi_app newinst hal_test_ctor first 42 two three; echo "first: $?"

@@ -1,7 +1,8 @@
 #!/bin/bash
 # HAL threads inside rtapi_app: creation rules, addf/initf/delf, init cycle vs threadbeat, parked thread, unload.
 out=$(mktemp)
-trap 'realtime stop >/dev/null 2>&1; rm -f "$out"' EXIT
+. ../../lib/testmods.sh
+trap 'tm_cleanup; rm -f "$out"' EXIT
 realtime start 2>"$out" || exit 1
 halcmd loadrt hal_core_rt || exit 1
 halcmd start

@@ -1,5 +1,5 @@
 #!/bin/bash
-# Error reporting: text + source line on stderr, -n 0 continues, -n 2 stops, missing/bad files, stdin MDI.
+# Error reporting: text + source line on stderr, -n 0 continues, -n 2 stops, missing/bad/blank files, stdin MDI.
 rs274 -g -n 0 test.ngc 2>&1 | awk '{$1=""; print}'
 echo "status ${PIPESTATUS[0]}"
 rs274 -g test.ngc 2>&1 | awk '{$1=""; print}'
@@ -17,4 +17,9 @@ echo "status ${PIPESTATUS[0]}"
 rm -f bad.tbl order.var
 rs274 -g a b c 2>&1 | head -n 1
 echo "status ${PIPESTATUS[0]}"
+# a file with nothing but blank lines fails while opening: no ON_RESET at all
+printf '\n  \n\t\n' > blank.ngc
+rs274 -g blank.ngc 2>&1 | awk '{$1=""; print}'
+echo "status ${PIPESTATUS[0]}"
+rm -f blank.ngc
 exit 0

@@ -14,9 +14,11 @@ halcmd -s show comp >"$out" 2>&1
 awk '$3 ~ /kins/ {print $2, $3, $4}' "$out" | sort -k2
 halcmd -s show pin >"$out" 2>&1
 echo "pins of the pinless modules: $(grep -cE 'corexykins|rotatekins|scorbot-kins' "$out")"
-halcmd setp matrixkins.C_xy 0.25 >"$out" 2>&1 && echo "setp done"
-halcmd -s show param >"$out" 2>&1
+echo "matrixkins at load (its C_xx..C_zz params come with motion's first type query):"
+halcmd -s show pin >"$out" 2>&1
 awk '$5 ~ /^matrixkins/ {print $2, $3, $4, $5}' "$out"
+halcmd -s show param >"$out" 2>&1
+echo "matrixkins params: $(grep -c 'matrixkins' "$out")"
 for m in corexykins rotatekins scorbot-kins matrixkins; do
     halcmd unload $m >"$out" 2>&1 && echo "unloaded $m"
 done

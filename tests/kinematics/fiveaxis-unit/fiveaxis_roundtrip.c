@@ -2,6 +2,7 @@
 #include <math.h>
 #include <stdio.h>
 #include "emc/kinematics/fiveaxis/rotary_math.h"
+#include "emc/kinematics/fiveaxis/trsrn_math.h"
 #include "fiveaxis_unit.h"
 
 #define TOLERANCE 1e-9
@@ -15,12 +16,43 @@ static const double turns[] = {-30.0, 0.0, 45.0, 135.0, 270.0};
 #define NTURN (int)(sizeof(turns) / sizeof(turns[0]))
 
 /* Which machine a grid point is run through. */
-typedef enum { M_AC, M_BC, M_AB, M_AC_CONV, M_5AXIS, M_ACB, M_BCA, M_MAX, M_COUNT } machine_t;
+typedef enum { M_AC, M_BC, M_AB, M_AC_CONV, M_5AXIS, M_ACB, M_BCA, M_ACB_TOOL, M_BCA_TOOL, M_MAX,
+               M_COUNT } machine_t;
 
 static const char *const machine_names[M_COUNT] = {
     "xyzac-trt", "xyzbc-trt", "xyzab-tdr", "xyzac-trt conventional", "5axiskins",
-    "xyzacb-trsrn", "xyzbca-trsrn", "maxkins"
+    "xyzacb-trsrn TCP", "xyzbca-trsrn TCP", "xyzacb-trsrn TOOL", "xyzbca-trsrn TOOL", "maxkins"
 };
+
+/* The trsrn machines (LinuxCNC's formulas) in one direction; angles t, r as table/secondary/primary. */
+static int run_trsrn(machine_t m, int dir, const double in[3], double t, double r, double out[3])
+{
+    trsrn_variant_t v = (m == M_ACB || m == M_ACB_TOOL) ? TRSRN_ACB : TRSRN_BCA;
+    int tool = m == M_ACB_TOOL || m == M_BCA_TOOL;
+    trsrn_geom_t g = {33, 40, 120, 10, -5, 60, -90, 0.3, 45, t + r, r};
+    double j[6] = {in[0], in[1], in[2], r, t, t + r};
+    if (dir) {
+        (tool ? trsrn_tool_inverse : trsrn_tcp_inverse)(v, &g, in, j);
+        out[0] = j[0], out[1] = j[1], out[2] = j[2];
+    } else {
+        (tool ? trsrn_tool_forward : trsrn_tcp_forward)(v, &g, j, out);
+    }
+    return isfinite(out[0]) && isfinite(out[1]) && isfinite(out[2]) ? 0 : -1;
+}
+
+/* xyzab_tdr_kins (LinuxCNC's formulas) in one direction at A t, B r. */
+static int run_tdr(int dir, const double in[3], double t, double r, double out[3])
+{
+    tdr_geom_t g = {18, -5, 33, 2, 3, 4};
+    double j[5] = {in[0], in[1], in[2], t, r};
+    if (dir) {
+        tdr_tcp_inverse(&g, in, t, r, j);
+        out[0] = j[0], out[1] = j[1], out[2] = j[2];
+    } else {
+        tdr_tcp_forward(&g, j, out);
+    }
+    return 0;
+}
 
 /* Largest component difference of two 3-vectors. */
 static double diff3(const double a[3], const double b[3])
@@ -33,16 +65,13 @@ static int run(machine_t m, int dir, const double in[3], double t, double r, dou
 {
     table2_geom_t ac = {ROT_X, ROT_Z, {12, -7, 30}, {1.5, 4, 60}, 25, m == M_AC_CONV};
     table2_geom_t bc = {ROT_Y, ROT_Z, {-3, 8, 20}, {6, -2, 45}, 12, 0};
-    table2_geom_t ab = {ROT_X, ROT_Y, {2, 3, 4}, {-5, 7, 33}, 18, 0};
-    trsrn_geom_t acb = {ROT_X, ROT_Y, {0, 40, -120}, {10, -5, 150}, 45, 80};
-    trsrn_geom_t bca = {ROT_Y, ROT_X, {25, 0, -90}, {-8, 3, 120}, 30, 60};
-    const table2_geom_t *tg = m == M_BC ? &bc : m == M_AB ? &ab : &ac;
+    const table2_geom_t *tg = m == M_BC ? &bc : &ac;
     if (m == M_5AXIS)
         return dir ? pivot5_inverse(250, in, t, r, 7.5, out) : pivot5_forward(250, in, t, r, 7.5, out);
-    if (m == M_ACB || m == M_BCA) {
-        const trsrn_geom_t *g = m == M_ACB ? &acb : &bca;
-        return dir ? trsrn_inverse(g, in, r, t, t + r, out) : trsrn_forward(g, in, r, t, t + r, out);
-    }
+    if (m == M_AB)
+        return run_tdr(dir, in, t, r, out);
+    if (m >= M_ACB && m <= M_BCA_TOOL)
+        return run_trsrn(m, dir, in, t, r, out);
     return dir ? table2_inverse(tg, in, t, r, out) : table2_forward(tg, in, t, r, out);
 }
 

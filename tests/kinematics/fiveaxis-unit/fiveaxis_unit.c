@@ -2,6 +2,7 @@
 #include <math.h>
 #include <stdio.h>
 #include "emc/kinematics/fiveaxis/rotary_math.h"
+#include "emc/kinematics/fiveaxis/trsrn_math.h"
 #include "emc/kinematics/fiveaxis/axis_map.h"
 #include "fiveaxis_unit.h"
 
@@ -60,37 +61,26 @@ static void pivot_known(void)
     show3("max L1 U2 V3 W4", maxkins_forward(1, 0, mj3, mw), mw);
 }
 
-/* Table rotary plus a nutating head. */
+/* LinuxCNC's trsrn TCP by hand: only a 10 mm tool and A at 90 degrees; joints (0, 0, 0) are world (0, 10, 10). */
 static void trsrn_known(void)
 {
-    trsrn_geom_t g = {ROT_X, ROT_Y, {0, 0, 0}, {0, 0, 100}, 0, 0};
-    double w[3] = {0, 0, 0}, j[3];
-    show3("acb pivot 100 nut0 B90", trsrn_inverse(&g, w, 0, 0, 90, j), j);
-    show3("acb pivot 100 nut0 C90 B90", trsrn_inverse(&g, w, 0, 90, 90, j), j);
-    g.nut_angle = 90;
-    show3("acb pivot 100 nut90 B90", trsrn_inverse(&g, w, 0, 0, 90, j), j);
-    g.nut_angle = 45;
-    show3("acb pivot 100 nut45 B180", trsrn_inverse(&g, w, 0, 0, 180, j), j);
-    g.nut_angle = 0;
-    double w2[3] = {0, 10, 0};
-    show3("acb table A90 (0,10,0)", trsrn_inverse(&g, w2, 90, 0, 0, j), j);
-    g.tool_offset = 50;
-    double w3[3] = {0, 0, 50};
-    show3("acb tool 50 B90 (0,0,50)", trsrn_inverse(&g, w3, 0, 0, 90, j), j);
-    trsrn_geom_t h = {ROT_Y, ROT_X, {0, 0, 0}, {0, 0, 100}, 0, 0};
-    show3("bca pivot 100 nut0 A90", trsrn_inverse(&h, w, 0, 0, 90, j), j);
+    trsrn_geom_t g = {10, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
+    double j[6] = {0, 0, 0, 90, 0, 0}, w[3];
+    trsrn_tcp_forward(TRSRN_ACB, &g, j, w);
+    show3("acb TCP tool 10 A90", 0, w);
+    double q[3] = {0, 10, 10};
+    trsrn_tcp_inverse(TRSRN_ACB, &g, q, j);
+    show3("acb TCP inverse of it", 0, j);
 }
 
 /* Non-finite input is refused instead of producing NaN joints. */
 static void refusals(void)
 {
     table2_geom_t ac = {ROT_X, ROT_Z, {0, 0, 0}, {0, 0, 0}, 0, 0};
-    trsrn_geom_t g = {ROT_X, ROT_Y, {0, 0, 0}, {0, 0, 100}, 0, 0};
     double nan_w[3] = {NAN, 0, 0}, ok[3] = {1, 2, 3}, out[3];
     double mj[9] = {0, 0, 0, 0, INFINITY, 0, 0, 0, 0}, mo[9];
-    printf("refused: table2 inv %d fwd %d, trsrn inv %d fwd %d, 5axis inv %d fwd %d, max %d %d\n",
+    printf("refused: table2 inv %d fwd %d, 5axis inv %d fwd %d, max %d %d\n",
            table2_inverse(&ac, nan_w, 0, 0, out), table2_forward(&ac, ok, INFINITY, 0, out),
-           trsrn_inverse(&g, ok, 0, NAN, 0, out), trsrn_forward(&g, nan_w, 0, 0, 0, out),
            pivot5_inverse(250, ok, NAN, 0, 0, out), pivot5_forward(NAN, ok, 0, 0, 0, out),
            maxkins_forward(1, 0, mj, mo), maxkins_inverse(NAN, 0, mj, mo));
 }

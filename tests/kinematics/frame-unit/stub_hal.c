@@ -20,6 +20,15 @@ void rtapi_print_msg(msg_level_t level, const char *fmt, ...)
 }
 
 /* Component creation: always id 7. */
+/* rtapi_print: printed as it is. */
+void rtapi_print(const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    vprintf(fmt, ap);
+    va_end(ap);
+}
+
 int hal_init(const char *name)
 {
     printf("hal_init %s\n", name);

@@ -42,7 +42,7 @@ static void known_lengths(void)
     double len[GENHEX_STRUTS];
     genhex_default_geometry(&g);
     EmcPose p = pose6(0, 0, 20, 0, 0, 0);
-    int ok = genhex_inverse(&g, &p, len) == 0;
+    int ok = genhex_inverse(&g, &p, len, NULL) == 0;
     for (int i = 0; i < GENHEX_STRUTS; i++) {
         double dx = g.platform[i].x - g.base[i].x, dy = g.platform[i].y - g.base[i].y;
         ok = ok && fabs(len[i] - sqrt(400.0 + dx * dx + dy * dy)) < 1e-12;
@@ -50,7 +50,7 @@ static void known_lengths(void)
     check(ok, "level pose at z=20 gives the hand-computed strut lengths");
     printf("strut 0 at z=20: %.6f (expected %.6f)\n", len[0], sqrt(400.0 + 21.95 * 21.95 + 1.75 * 1.75));
     p = pose6(0, 0, 20, 0, 0, 90);
-    genhex_inverse(&g, &p, len);
+    genhex_inverse(&g, &p, len, NULL);
     check(fabs(len[0] - sqrt(400.0 + pow(-11.5 + 22.95, 2) + pow(-1.0 - 13.25, 2))) < 1e-9,
           "c=90 turns platform joint 0 to (-11.5, -1)");
     double m[3][3];
@@ -58,21 +58,31 @@ static void known_lengths(void)
     check(fabs(m[0][2] - 1) < 1e-12 && fabs(m[2][0] + 1) < 1e-12, "b=90 maps platform Z to world X");
 }
 
-/* Tool and spindle offsets: the origin sits tool_length above the tool tip along platform Z. */
+/* Tool and spindle offsets rise every base and platform joint: nothing changes level, and tilted the
+ * controlled point moves along the platform Z (the offset joints equal a shifted origin). */
 static void tool_offset(void)
 {
     genhex_geom_t g;
-    double a[GENHEX_STRUTS], b[GENHEX_STRUTS];
+    double a[GENHEX_STRUTS], b[GENHEX_STRUTS], rot[3][3];
     genhex_default_geometry(&g);
     EmcPose p = pose6(1, 2, 20, 0, 0, 0);
-    genhex_inverse(&g, &p, a);
-    g.tool_length = 5;
-    p.tran.z = 15;
-    genhex_inverse(&g, &p, b);
+    genhex_inverse(&g, &p, a, NULL);
+    g.z_offset = 5;
+    genhex_inverse(&g, &p, b, NULL);
     int same = 1;
     for (int i = 0; i < GENHEX_STRUTS; i++)
         same = same && fabs(a[i] - b[i]) < 1e-12;
-    check(same, "tool length 5 with the tip at z=15 equals no tool at z=20");
+    check(same, "an offset changes no strut while the platform is level");
+    p = pose6(1, 2, 20, 10, -5, 0);
+    genhex_inverse(&g, &p, b, NULL);
+    genhex_rotation(10, -5, 0, rot);
+    g.z_offset = 0;
+    EmcPose moved = pose6(1 + 5 * rot[0][2], 2 + 5 * rot[1][2], 20 + 5 * rot[2][2] - 5, 10, -5, 0);
+    genhex_inverse(&g, &moved, a, NULL);
+    same = 1;
+    for (int i = 0; i < GENHEX_STRUTS; i++)
+        same = same && fabs(a[i] - b[i]) < 1e-9;
+    check(same, "tilted, an offset of 5 moves the controlled point 5 along the platform Z");
 }
 
 /* forward(inverse(p)) == p over a grid of poses, from a level guess. */
@@ -88,9 +98,9 @@ static void round_trips(double screw_lead)
             for (double z = 15; z <= 30; z += 7.5)
                 for (double ang = -10; ang <= 10; ang += 10) {
                     EmcPose p = pose6(x, y, z, ang, -ang / 2, ang * 1.5), q = pose6(0, 0, 20, 0, 0, 0);
-                    genhex_solve_t s = {1e-9, 500, 120, 0, 0};
+                    genhex_solve_t s = {1e-9, 500, 120, 0};
                     count++;
-                    if (genhex_inverse(&g, &p, len) < 0 || genhex_forward(&g, len, &q, &s) < 0) {
+                    if (genhex_inverse(&g, &p, len, NULL) < 0 || genhex_forward(&g, len, &q, &s) < 0) {
                         failed++;
                         continue;
                     }
@@ -109,14 +119,17 @@ static void twist(void)
     genhex_default_geometry(&g);
     for (int i = 0; i < GENHEX_STRUTS; i++)
         g.base_n[i] = (PmCartesian){1, 0, 0};
+    for (int i = 0; i < GENHEX_STRUTS; i++)
+        g.platform_n[i] = (PmCartesian){0, 0, 1};
     EmcPose p = pose6(0, 0, 20, 0, 0, 0);
-    genhex_inverse(&g, &p, plain);
+    genhex_inverse(&g, &p, plain, NULL);
     g.screw_lead = 2.0;
-    genhex_inverse(&g, &p, corr);
+    genhex_inverse(&g, &p, corr, NULL);
     check(fabs(plain[1] - corr[1]) > 1e-6 && fabs(plain[1] - corr[1]) <= 0.5 + 1e-12,
           "screw lead 2 changes a twisted strut by at most a quarter turn of lead");
-    g.base_n[0] = (PmCartesian){0, 0, 0};
-    check(genhex_inverse(&g, &p, corr) == GENHEX_DEGENERATE, "a zero joint axis with a lead is refused");
+    double reported[GENHEX_STRUTS];
+    genhex_inverse(&g, &p, corr, reported);
+    check(fabs(corr[1] - plain[1] - reported[1]) < 1e-12, "the correction is reported per strut");
 }
 
 /* Unreachable lengths, a flat platform and an iteration cap all fail without touching the pose. */
@@ -126,36 +139,45 @@ static void refused(void)
     double len[GENHEX_STRUTS] = {10, 10, 10, 10, 10, 10};
     genhex_default_geometry(&g);
     EmcPose q = pose6(0, 0, 20, 0, 0, 0), keep = q;
-    genhex_solve_t s = {1e-9, 500, 120, 0, 0};
+    genhex_solve_t s = {1e-9, 500, 120, 0};
     int r = genhex_forward(&g, len, &q, &s);
     check(r < 0 && pose_diff(&q, &keep) == 0, "struts shorter than the base gap have no pose");
     EmcPose flat = pose6(0, 0, 0, 0, 0, 0), high = pose6(0, 0, 20, 0, 0, 0);
-    genhex_inverse(&g, &flat, len);
-    q = flat;
-    check(genhex_forward(&g, len, &q, &s) == 0 && s.iterations == 0,
-          "an exact guess is accepted without a step");
-    genhex_inverse(&g, &high, len);
+    genhex_inverse(&g, &high, len, NULL);
+    q = high;
+    check(genhex_forward(&g, len, &q, &s) == 0 && s.iterations == 1 && pose_diff(&q, &high) < 1e-12,
+          "an exact guess converges in the first step");
+    genhex_inverse(&g, &high, len, NULL);
     q = flat;
     r = genhex_forward(&g, len, &q, &s);
-    check((r == GENHEX_SINGULAR || r == GENHEX_RUNAWAY) && pose_diff(&q, &flat) == 0,
-          "a guess in the base plane (no Z gradient) is refused");
+    check(r == GENHEX_RUNAWAY && pose_diff(&q, &flat) == 0,
+          "a guess in the base plane (no Z gradient) is refused (-2)");
     EmcPose p = pose6(3, -2, 25, 5, 5, 5);
-    genhex_inverse(&g, &p, len);
+    genhex_inverse(&g, &p, len, NULL);
     q = pose6(0, 0, 20, 0, 0, 0);
     s.limit_iterations = 1;
     r = genhex_forward(&g, len, &q, &s);
-    check(r == GENHEX_NO_CONVERGENCE && s.iterations == 1, "limit-iterations 1 stops the solver");
+    check(r == GENHEX_NO_CONVERGENCE, "limit-iterations 1 stops the solver (-5)");
+    q = pose6(0, 0, 20, 0, 0, 0);
+    s.limit_iterations = 5000;
+    s.conv_criterion = -1;
+    r = genhex_forward(&g, len, &q, &s);
+    check(r == GENHEX_NO_CONVERGENCE && s.iterations == GENHEX_MAX_ITERATIONS + 1,
+          "limit-iterations 5000 still stops after 1000 steps (bounded cycle time)");
+    s.conv_criterion = 1e-9;
     q = pose6(0, 0, 20, 0, 0, 0);
     s.limit_iterations = 120;
     s.max_error = 0.5;
     r = genhex_forward(&g, len, &q, &s);
-    check(r == GENHEX_RUNAWAY && s.iterations == 1, "a first step over max-error 0.5 is refused");
+    check(r == GENHEX_RUNAWAY, "a summed strut error over max-error 0.5 is refused (-2)");
     s.max_error = 500;
     q = pose6(0, 0, 20, 0, 0, 0);
     r = genhex_forward(&g, len, &q, &s);
-    check(r == 0 && pose_diff(&p, &q) < 1e-8 && s.error < 1e-9, "the same solve converges with max-error 500");
+    check(r == 0 && pose_diff(&p, &q) < 1e-8, "the same solve converges with max-error 500");
+    double zero[GENHEX_STRUTS] = {20, 20, 0, 20, 20, 20};
+    check(genhex_forward(&g, zero, &q, &s) == GENHEX_DEGENERATE, "a strut of length 0 is refused (-1)");
     g.platform[0] = g.base[0];
-    check(genhex_inverse(&g, &flat, len) == GENHEX_DEGENERATE, "a zero-length strut is refused");
+    check(genhex_inverse(&g, &flat, len, NULL) == GENHEX_DEGENERATE, "a zero-length strut is refused");
 }
 
 /* Run every group; the exit status reports failures. */

@@ -14,7 +14,9 @@ halcmd setp lineardeltakins.L 300 >"$out" 2>&1 && echo "setp done"
 halcmd -s show pin >"$out" 2>&1
 awk '$5 ~ /^(lineardelta|rotarydelta|tripod|rose)kins/ {print $2, $3, $4, $5}' "$out"
 echo "pentakins pins: $(grep -c 'pentakins\.' "$out")"
-grep -E 'pentakins\.(base\.4\.z|effector\.3\.z|limit-iterations|max-error)$' "$out" | awk '{print $2, $3, $4, $5}'
+grep -E 'pentakins\.(tool-offset|limit-iterations|max-error)$' "$out" | awk '{print $2, $3, $4, $5}'
+halcmd -s show param >"$out" 2>&1
+grep -E 'pentakins\.(base\.4\.z|effector\.3\.z)$' "$out" | awk '{print $2, $3, $4, $5}'
 for m in lineardeltakins rotarydeltakins tripodkins rosekins pentakins; do
     halcmd unload $m >"$out" 2>&1 && echo "unloaded $m"
 done

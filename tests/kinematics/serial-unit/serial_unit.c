@@ -139,6 +139,7 @@ int main(void)
     scara_tests();
     su_arm6_tests();
     su_genser_tests();
+    su_three21_tests();
     printf("checks: %d failures: %d\n", checks, failures);
     return failures != 0;
 }

@@ -20,5 +20,6 @@ double su_random(double lo, double hi);
 /* Test groups. */
 void su_arm6_tests(void);
 void su_genser_tests(void);
+void su_three21_tests(void);
 
 #endif

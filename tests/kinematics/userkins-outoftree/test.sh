@@ -10,7 +10,9 @@ nm -D --defined-only mykins.so | awk '{print $3}' | grep -E '^kin' | sort
 RTLIB_DIR=$tmp "$EMC2_HOME/objects/unit/comptest" <<'S'
 load mykins
 ktype
-set mykins.z-offset 0.5
+show
+set mykins.in 5
 kfwd 1 2 3
 kinv 3 1 2 3.5
+get mykins.out
 S

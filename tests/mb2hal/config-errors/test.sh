@@ -11,7 +11,7 @@ run() {
 printf '[MB2HAL_INIT]\nTOTAL_TRANSACTIONS=1\n[TRANSACTION_00]\nLINK_TYPE=tcp\nTCP_IP=127.0.0.1\n' > bad.ini
 printf 'MB_SLAVE_ID=1\nMB_TX_CODE=fnct_03_read_holding_registers\nFIRST_ELEMENT=0\nNELEMENTS=200\n' >> bad.ini
 printf '[MB2HAL_INIT]\nINIT_DEBUG=0\nTOTAL_TRANSACTIONS=1\n[TRANSACTION_00]\nLINK_TYPE=tcp\n' > dead.ini
-printf 'TCP_IP=127.0.0.1\nTCP_PORT=1\nMB_SLAVE_ID=1\nMB_TX_CODE=fnct_01_read_coils\nFIRST_ELEMENT=0\nNELEMENTS=1\n' >> dead.ini
+printf 'TCP_IP=127.0.0.1\nTCP_PORT=1\nMB_SLAVE_ID=1\nMB_TX_CODE=fnct_02_read_discrete_inputs\nFIRST_ELEMENT=0\nNELEMENTS=1\n' >> dead.ini
 run
 run config=
 run cfg.ini

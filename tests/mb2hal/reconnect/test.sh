@@ -8,7 +8,7 @@ sim_start --set hr:0=11
     printf '[TRANSACTION_00]\n'; tcp_link
     printf 'MB_TX_CODE=fnct_03_read_holding_registers\nFIRST_ELEMENT=0\nNELEMENTS=1\nHAL_TX_NAME=live\n'
     printf 'MB_RESPONSE_TIMEOUT_MS=5000\n'
-    printf '[TRANSACTION_01]\nTCP_PORT=1\nMB_TX_CODE=fnct_01_read_coils\nFIRST_ELEMENT=0\nNELEMENTS=1\n'
+    printf '[TRANSACTION_01]\nTCP_PORT=1\nMB_TX_CODE=fnct_02_read_discrete_inputs\nFIRST_ELEMENT=0\nNELEMENTS=1\n'
     printf 'HAL_TX_NAME=dead\n'
 } > "$MB_TMP/cfg.ini"
 

@@ -44,7 +44,7 @@ echo "kinstype.is-1: $(halcmd getp kinstype.is-1)"
 halcmd setp motion.switchkins-type 7
 sleep 0.2
 motion-inject - <<<"messages"
-run millturn 5 coordinates=xyzac
+run millturn 5
 jog 5
 run xyzab_tdr_kins 5
 jog 5

@@ -121,6 +121,20 @@ void plan_run(Machine &m, const NMLmsg &msg)
 void plan_pause(Machine &m, const NMLmsg &) { if (m.interp != EMC_TASK_INTERP_IDLE) m.paused = true; }
 void plan_resume(Machine &m, const NMLmsg &) { m.paused = false; }
 void plan_close(Machine &m, const NMLmsg &) { m.program.clear(); }
+
+// STEP: in AUTO with the interpreter idle the program starts paused (single-step mode);
+// otherwise the paused program goes on.
+void plan_step(Machine &m, const NMLmsg &)
+{
+    if (m.interp != EMC_TASK_INTERP_IDLE || m.program.empty()) {
+        m.paused = false;
+        return;
+    }
+    m.interp = EMC_TASK_INTERP_READING;
+    m.program_line = 1;
+    m.next_line_at = m.now;
+    m.paused = true;
+}
 void optional_stop(Machine &m, const NMLmsg &msg) { m.status.task.optional_stop_state = as<EMC_TASK_PLAN_SET_OPTIONAL_STOP>(msg).state != 0; }
 void block_delete(Machine &m, const NMLmsg &msg) { m.status.task.block_delete_state = as<EMC_TASK_PLAN_SET_BLOCK_DELETE>(msg).state != 0; }
 
@@ -183,8 +197,10 @@ void jog_incr(Machine &m, const NMLmsg &msg)
     const EMC_JOG_INCR &j = as<EMC_JOG_INCR>(msg);
     if (!jog_allowed(m, j, "JOG_INCR") || j.jjogmode == EMC_JOG_JOINT) return;
     int i = j.joint_or_axis;
-    m.jog_target[i] = m.pos[i] + j.incr;
-    m.jog_vel[i] = clamp_vel(m, j.incr < 0 ? -std::abs(j.vel) : std::abs(j.vel));
+    // As motion does: the sign of vel is the direction, incr is added or taken away.
+    double step = j.vel > 0 ? j.incr : -j.incr;
+    m.jog_target[i] = m.pos[i] + step;
+    m.jog_vel[i] = clamp_vel(m, step < 0 ? -std::abs(j.vel) : std::abs(j.vel));
     m.jog_to_target[i] = true;
 }
 
@@ -350,7 +366,7 @@ const Handler handlers[] = {
     {EMC_TASK_PLAN_RESUME_TYPE, PPR, plan_resume},
     {EMC_TASK_PLAN_REVERSE_TYPE, PPR, nullptr},
     {EMC_TASK_PLAN_FORWARD_TYPE, PPR, nullptr},
-    {EMC_TASK_PLAN_STEP_TYPE, STEP, plan_resume},
+    {EMC_TASK_PLAN_STEP_TYPE, STEP, plan_step},
     {EMC_TASK_PLAN_SET_OPTIONAL_STOP_TYPE, PF, optional_stop},
     {EMC_TASK_PLAN_SET_BLOCK_DELETE_TYPE, PF, block_delete},
     {EMC_JOINT_HOME_TYPE, HOME, joint_home},

@@ -128,7 +128,9 @@ void fill_task(Machine &m, EMC_TASK_STAT &t)
 {
     t.mode = responder_task_mode(m);
     t.state = responder_task_state(m);
-    t.interpState = m.interp;
+    // A paused program shows the interpreter PAUSED, as task reports it.
+    bool program_paused = m.paused && m.interp != EMC_TASK_INTERP_IDLE && t.mode == EMC_TASK_MODE_AUTO;
+    t.interpState = program_paused ? EMC_TASK_INTERP_PAUSED : m.interp;
     t.execState = m.activity.until != 0 ? m.activity.exec_state : EMC_TASK_EXEC_DONE;
     t.delayLeft = m.activity.exec_state == EMC_TASK_EXEC_WAITING_FOR_DELAY && m.activity.until > m.now
                       ? m.activity.until - m.now : 0;

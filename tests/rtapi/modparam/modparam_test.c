@@ -48,7 +48,7 @@ int main(void)
         "count=12x", "count=4294967295", "count=4294967296", "count=-2147483649",
         "big=9223372036854775807", "big=9223372036854775808", "big=-0x10",
         "label=hello,world", "label=\"quoted, \"text", "label=",
-        "ints=7", "ints=4,5,6", "ints=1,,2", "ints=1,2,3,4", "ints=1,z,3",
+        "ints=7", "ints=4,5,6", "ints=1,,2", "ints=", "ints=3,", "ints=1,2,3,4", "ints=1,z,3",
         "longs=0x7fffffffffffffff,-1", "longs=1,2,3",
         "names=a,b", "names=", "names=x,y,z", "names=p,q,r,s",
         "bogus=1", "novalue", "=5", "\"count\"=\"33\"", "count=\"7\"",

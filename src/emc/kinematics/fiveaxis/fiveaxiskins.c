@@ -60,5 +60,6 @@ static int inverse(const EmcPose *pos, double *joints)
 }
 
 const switchkins_def_t switchkins_def = {
-    FIVEAXIS_NAME, FIVEAXIS_AXES, KINEMATICS_BOTH, setup, forward, inverse, 0
+    .name = FIVEAXIS_NAME, .default_coordinates = FIVEAXIS_AXES, .native_type = KINEMATICS_BOTH,
+    .setup = setup, .native_forward = forward, .native_inverse = inverse,
 };

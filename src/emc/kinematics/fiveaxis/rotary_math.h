@@ -19,29 +19,12 @@ typedef struct {
     int conventional;        /* conventional-directions: both rotaries turn the other way */
 } table2_geom_t;
 
-/* One rotary in the table plus a spindle head turning about Z with a nutating joint (trsrn). */
-typedef struct {
-    int table_axis;          /* ROT_X (A table) or ROT_Y (B table) */
-    int nutation_axis;       /* ROT_X or ROT_Y: the nutation axis leans from it toward +Z */
-    double rot_axis[3];      /* a point of the table axis (x/y/z-rot-axis) */
-    double pivot[3];         /* head pivot from the gauge point at zero angles (x/y/z-offset) */
-    double nut_angle;        /* lean of the nutation axis from horizontal, degrees (nut-angle) */
-    double tool_offset;      /* tool length from the gauge point along the spindle (tool-offset) */
-} trsrn_geom_t;
-
 /* World XYZ (table frame) and rotary angles -> XYZ joints; 0, or -1 when not finite. */
 int table2_inverse(const table2_geom_t *g, const double world[3], double primary_deg,
                    double secondary_deg, double joints[3]);
 /* XYZ joints and rotary angles -> world XYZ; 0, or -1 when not finite. */
 int table2_forward(const table2_geom_t *g, const double joints[3], double primary_deg,
                    double secondary_deg, double world[3]);
-/* World XYZ and table, spindle (C) and nutation angles -> XYZ joints; 0, or -1 when not finite. */
-int trsrn_inverse(const trsrn_geom_t *g, const double world[3], double table_deg,
-                  double spindle_deg, double nutation_deg, double joints[3]);
-/* XYZ joints and table, spindle and nutation angles -> world XYZ; 0, or -1 when not finite. */
-int trsrn_forward(const trsrn_geom_t *g, const double joints[3], double table_deg,
-                  double spindle_deg, double nutation_deg, double world[3]);
-
 /* 5axiskins: XYZ joints, B, C, W and pivot length -> world XYZ; 0, or -1 when not finite. */
 int pivot5_forward(double pivot_length, const double joints[3], double b_deg, double c_deg,
                    double w, double world[3]);

@@ -1,64 +1,88 @@
-/* trsrn.c: pins and TCP glue shared by the 6-axis table-rotary/spindle-rotary-nutating modules. */
+/* trsrn.c: pins and type dispatch shared by xyzacb_trsrn and xyzbca_trsrn. */
 #include "rtapi.h"
 #include "hal.h"
 #include "emc/kinematics/kins_pins.h"
-#include "rotary_math.h"
-#include "tcpswitch.h"
 #include "trsrn.h"
 
-/* Pin order: table axis point x/y/z, head pivot x/y/z, nutation angle, tool offset. */
-enum { TR_AXIS_X, TR_AXIS_Y, TR_AXIS_Z, TR_OFF_X, TR_OFF_Y, TR_OFF_Z, TR_NUT, TR_TOOL, TR_PINS };
+/* Pin order; the pivot and rot-axis names depend on the machine. */
+enum { TR_TOOL, TR_PIVOT, TR_ZPIVOT, TR_XOFF, TR_YOFF, TR_ROT, TR_ZROT, TR_PREROT, TR_NUT, TR_PRIMARY,
+       TR_SECONDARY, TR_PINS };
 
-static const kins_pin_def_t trsrn_pin_defs[TR_PINS] = {
-    {"x-rot-axis", 0.0}, {"y-rot-axis", 0.0}, {"z-rot-axis", 0.0}, {"x-offset", 0.0},
-    {"y-offset", 0.0}, {"z-offset", 0.0}, {"nut-angle", 0.0}, {"tool-offset", 0.0}
-};
-
-/* The geometry pins (all float IN), in trsrn_pin_defs order. */
 static hal_float_t **pins;
 
-/* Make the geometry pins under prefix; 0 or negative errno. */
-int trsrn_setup(int comp_id, const char *prefix)
+/* Load-time pin of one instance: <prefix>.dummy (s32 OUT). */
+int trsrn_instance(int comp_id, int i, const char *prefix)
 {
-    return kins_float_pins(comp_id, prefix, trsrn_pin_defs, TR_PINS, &pins);
+    hal_s32_t **dummy = hal_malloc(sizeof(*dummy));
+    (void)i;
+    if (!dummy)
+        return -ENOMEM;
+    return hal_pin_s32_newf(HAL_OUT, dummy, comp_id, "%s.dummy", prefix);
 }
 
-/* Geometry of the module's variant from the current pin values. */
+/* The kinematics pins of module m (all float IN, 0). */
+int trsrn_setup_pins(int comp_id, const trsrn_module_t *m)
+{
+    const kins_pin_def_t defs[TR_PINS] = {
+        {"tool-offset-z", 0}, {m->pivot_pin, 0}, {"z-pivot", 0}, {"x-offset", 0}, {"y-offset", 0},
+        {m->rot_axis_pin, 0}, {"z-rot-axis", 0}, {"pre-rot", 0}, {"nut-angle", 0}, {"primary-angle", 0},
+        {"secondary-angle", 0}};
+    return kins_float_pins(comp_id, m->pin_prefix, defs, TR_PINS, &pins);
+}
+
+/* Geometry from the pins (zero before they exist). */
 static trsrn_geom_t trsrn_geom(void)
 {
-    trsrn_geom_t g;
-    g.table_axis = trsrn_variant.table_axis;
-    g.nutation_axis = trsrn_variant.nutation_axis;
-    for (int i = 0; i < 3; i++) {
-        g.rot_axis[i] = *pins[TR_AXIS_X + i];
-        g.pivot[i] = *pins[TR_OFF_X + i];
-    }
+    trsrn_geom_t g = {0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
+    if (!pins)
+        return g;
+    g.dt = *pins[TR_TOOL];
+    g.l_pivot = *pins[TR_PIVOT];
+    g.lz = *pins[TR_ZPIVOT];
+    g.dx = *pins[TR_XOFF];
+    g.dy = *pins[TR_YOFF];
+    g.rot_axis = *pins[TR_ROT];
+    g.z_rot_axis = *pins[TR_ZROT];
+    g.pre_rot = *pins[TR_PREROT];
     g.nut_angle = *pins[TR_NUT];
-    g.tool_offset = *pins[TR_TOOL];
+    g.primary = *pins[TR_PRIMARY];
+    g.secondary = *pins[TR_SECONDARY];
     return g;
 }
 
-/* Copy the three rotary values (joint slots 3..5). */
-static void copy_rotaries(const double *from, double *to)
-{
-    for (int i = TRSRN_TABLE; i <= TRSRN_NUTATION; i++)
-        to[i] = from[i];
-}
-
-/* TCP forward of the module's variant (tcpswitch_def.tcp_forward). */
-int trsrn_tcp_forward(const double *joints, double *world)
+/* Joints -> world: identity, TCP or TOOL for X Y Z; A B C are the joints 3..5; U V W are 0. */
+int trsrn_forward(const trsrn_module_t *m, int t, const double *joints, EmcPose *pos)
 {
     trsrn_geom_t g = trsrn_geom();
-    copy_rotaries(joints, world);
-    return trsrn_forward(&g, joints, joints[TRSRN_TABLE], joints[TRSRN_SPINDLE],
-                         joints[TRSRN_NUTATION], world);
+    double xyz[3] = {joints[0], joints[1], joints[2]};
+    if (t == 1)
+        trsrn_tcp_forward(m->variant, &g, joints, xyz);
+    else if (t == 2)
+        trsrn_tool_forward(m->variant, &g, joints, xyz);
+    pos->tran = (PmCartesian){xyz[0], xyz[1], xyz[2]};
+    pos->a = joints[3];
+    pos->b = joints[4];
+    pos->c = joints[5];
+    pos->u = pos->v = pos->w = 0;
+    return 0;
 }
 
-/* TCP inverse of trsrn_tcp_forward. */
-int trsrn_tcp_inverse(const double *world, double *joints)
+/* World -> joints: identity, TCP (rotary angles from the joints passed in) or TOOL; joints 3..5 := A B C. */
+int trsrn_inverse(const trsrn_module_t *m, int t, const EmcPose *pos, double *joints)
 {
     trsrn_geom_t g = trsrn_geom();
-    copy_rotaries(world, joints);
-    return trsrn_inverse(&g, world, world[TRSRN_TABLE], world[TRSRN_SPINDLE],
-                         world[TRSRN_NUTATION], joints);
+    double xyz[3] = {pos->tran.x, pos->tran.y, pos->tran.z};
+    if (t == 1) {
+        trsrn_tcp_inverse(m->variant, &g, xyz, joints);
+    } else if (t == 2) {
+        trsrn_tool_inverse(m->variant, &g, xyz, joints);
+    } else {
+        joints[0] = xyz[0];
+        joints[1] = xyz[1];
+        joints[2] = xyz[2];
+    }
+    joints[3] = pos->a;
+    joints[4] = pos->b;
+    joints[5] = pos->c;
+    return 0;
 }

@@ -1,22 +1,24 @@
-/* trsrn.h: shared glue of xyzacb_trsrn and xyzbca_trsrn (table rotary, spindle rotary, nutating). */
+/* trsrn.h: the module glue shared by xyzacb_trsrn and xyzbca_trsrn (types 0 identity, 1 TCP, 2 TOOL). */
 #ifndef FIVEAXIS_TRSRN_H
 #define FIVEAXIS_TRSRN_H
 
-/* Joint slots: 0..2 XYZ, 3 table rotary, 4 spindle rotary (C), 5 nutation. */
-enum { TRSRN_TABLE = 3, TRSRN_SPINDLE = 4, TRSRN_NUTATION = 5 };
+#include "emc/kinematics/kinematics.h"
+#include "trsrn_math.h"
 
-/* Which machine axes the module's table and nutation axes are; each trsrn module defines it. */
+/* Which machine and the names its pins use. */
 typedef struct {
-    int table_axis;      /* ROT_X (A table) or ROT_Y (B table) */
-    int nutation_axis;   /* ROT_X or ROT_Y: the nutation axis leans from it */
-} trsrn_variant_t;
-extern const trsrn_variant_t trsrn_variant;
+    trsrn_variant_t variant;
+    const char *pin_prefix;   /* "xyzacb_trsrn_kins" */
+    const char *pivot_pin;    /* "y-pivot" or "x-pivot" */
+    const char *rot_axis_pin; /* "y-rot-axis" or "x-rot-axis" */
+} trsrn_module_t;
 
-/* Make the geometry pins under prefix; 0 or negative errno. */
-int trsrn_setup(int comp_id, const char *prefix);
-/* TCP forward of the module's variant (tcpswitch_def.tcp_forward). */
-int trsrn_tcp_forward(const double *joints, double *world);
-/* TCP inverse of trsrn_tcp_forward. */
-int trsrn_tcp_inverse(const double *world, double *joints);
+/* Load-time pin of one instance: <prefix>.dummy (s32 OUT). */
+int trsrn_instance(int comp_id, int i, const char *prefix);
+/* The kinematics pins of module m (first type query); 0 or -errno. */
+int trsrn_setup_pins(int comp_id, const trsrn_module_t *m);
+/* Forward and inverse of type t for module m. */
+int trsrn_forward(const trsrn_module_t *m, int t, const double *joints, EmcPose *pos);
+int trsrn_inverse(const trsrn_module_t *m, int t, const EmcPose *pos, double *joints);
 
 #endif

@@ -1,59 +1,78 @@
-/* xyzab_tdr_kins.c: xyzab_tdr_kins, tilting table A carrying a rotary B; type 0 identity, 1 TCP. */
+/* xyzab_tdr_kins.c: xyzab_tdr_kins, dual rotary table A (about X) carrying B (about Y); 0 identity, 1 TCP. */
 #include "rtapi.h"
 #include "hal.h"
 #include "emc/kinematics/kins_pins.h"
-#include "rotary_math.h"
-#include "tcpswitch.h"
+#include "emc/kinematics/kins_template.h"
+#include "trsrn_math.h"
 
-MODULE_DESCRIPTION("Switchable kinematics for a table with tilt A (about X) carrying rotary B");
+MODULE_DESCRIPTION("Switchable kinematics for a dual rotary table A (about X) carrying B (about Y)");
 
-/* Pin order: rot point x/y/z, offset x/y/z, tool offset. */
-enum { TDR_ROT_X, TDR_ROT_Y, TDR_ROT_Z, TDR_OFF_X, TDR_OFF_Y, TDR_OFF_Z, TDR_TOOL, TDR_PINS };
+/* Pin order. */
+enum { TDR_TOOL, TDR_XOFF, TDR_ZOFF, TDR_XR, TDR_YR, TDR_ZR, TDR_PINS };
 
 static const kins_pin_def_t tdr_pin_defs[TDR_PINS] = {
-    {"x-rot-point", 0.0}, {"y-rot-point", 0.0}, {"z-rot-point", 0.0}, {"x-offset", 0.0},
-    {"y-offset", 0.0}, {"z-offset", 0.0}, {"tool-offset", 0.0}
-};
+    {"tool-offset-z", 0}, {"x-offset", 0}, {"z-offset", 0}, {"x-rot-point", 0}, {"y-rot-point", 0},
+    {"z-rot-point", 0}};
 
-/* The geometry pins (all float IN), in tdr_pin_defs order. */
 static hal_float_t **pins;
 
-/* Make the geometry pins. */
-static int setup(int comp_id, const char *prefix)
+/* Load-time pin of one instance: <prefix>.dummy (s32 OUT). */
+static int instance(int comp_id, int i, const char *prefix)
 {
-    return kins_float_pins(comp_id, prefix, tdr_pin_defs, TDR_PINS, &pins);
+    hal_s32_t **dummy = hal_malloc(sizeof(*dummy));
+    (void)i;
+    if (!dummy)
+        return -ENOMEM;
+    return hal_pin_s32_newf(HAL_OUT, dummy, comp_id, "%s.dummy", prefix);
 }
 
-/* Geometry from the current pin values: A about X on the bed, B about Y on top. */
-static table2_geom_t tdr_geom(void)
+/* The kinematics pins (float IN, 0), at the first type query. */
+static int setup(int comp_id)
 {
-    table2_geom_t g = {ROT_X, ROT_Y, {0, 0, 0}, {0, 0, 0}, 0, 0};
-    for (int i = 0; i < 3; i++) {
-        g.rot_point[i] = *pins[TDR_ROT_X + i];
-        g.offset[i] = *pins[TDR_OFF_X + i];
-    }
-    g.tool_offset = *pins[TDR_TOOL];
+    return kins_float_pins(comp_id, "xyzab_tdr_kins", tdr_pin_defs, TDR_PINS, &pins);
+}
+
+/* Geometry from the pins (zero before they exist). */
+static tdr_geom_t geometry(void)
+{
+    tdr_geom_t g = {0, 0, 0, 0, 0, 0};
+    if (pins)
+        g = (tdr_geom_t){*pins[TDR_TOOL], *pins[TDR_XOFF], *pins[TDR_ZOFF], *pins[TDR_XR], *pins[TDR_YR],
+                         *pins[TDR_ZR]};
     return g;
 }
 
-/* Joints XYZAB -> world XYZAB with tool center point. */
-static int tcp_forward(const double *joints, double *world)
+/* Joints -> world (identity or TCP); A, B from the joints; C U V W are 0. */
+static int forward(int t, const double *joints, EmcPose *pos)
 {
-    table2_geom_t g = tdr_geom();
-    world[3] = joints[3];
-    world[4] = joints[4];
-    return table2_forward(&g, joints, joints[3], joints[4], world);
+    tdr_geom_t g = geometry();
+    double xyz[3] = {joints[0], joints[1], joints[2]};
+    if (t == 1)
+        tdr_tcp_forward(&g, joints, xyz);
+    pos->tran = (PmCartesian){xyz[0], xyz[1], xyz[2]};
+    pos->a = joints[3];
+    pos->b = joints[4];
+    pos->c = pos->u = pos->v = pos->w = 0;
+    return 0;
 }
 
-/* World XYZAB -> joints XYZAB with tool center point. */
-static int tcp_inverse(const double *world, double *joints)
+/* World -> joints 0..4 (identity or TCP); joints 3, 4 := A, B. */
+static int inverse(int t, const EmcPose *pos, double *joints)
 {
-    table2_geom_t g = tdr_geom();
-    joints[3] = world[3];
-    joints[4] = world[4];
-    return table2_inverse(&g, world, world[3], world[4], joints);
+    tdr_geom_t g = geometry();
+    double xyz[3] = {pos->tran.x, pos->tran.y, pos->tran.z};
+    if (t == 1) {
+        tdr_tcp_inverse(&g, xyz, pos->a, pos->b, joints);
+    } else {
+        joints[0] = xyz[0];
+        joints[1] = xyz[1];
+        joints[2] = xyz[2];
+    }
+    joints[3] = pos->a;
+    joints[4] = pos->b;
+    return 0;
 }
 
-const tcpswitch_def_t tcpswitch_def = {
-    "xyzab_tdr_kins", "xyzab-tdr-kins", "XYZAB", setup, tcp_forward, tcp_inverse
+const kins_template_def_t kins_template_def = {
+    "xyzab_tdr_kins", "xyzab-tdr-kins", instance, setup, 2, forward, inverse,
 };

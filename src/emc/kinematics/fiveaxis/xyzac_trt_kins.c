@@ -9,5 +9,7 @@ MODULE_DESCRIPTION("Switchable kinematics for a trunnion table: tilt A (about X)
 const trtkins_variant_t trtkins_variant = {"xyzac-trt-kins", "XYZAC", ROT_X, 3};
 
 const switchkins_def_t switchkins_def = {
-    "xyzac-trt-kins", "XYZAC", KINEMATICS_BOTH, trtkins_setup, trtkins_forward, trtkins_inverse, 1
+    .name = "xyzac-trt-kins", .default_coordinates = "XYZAC", .native_type = KINEMATICS_BOTH,
+    .setup = trtkins_setup, .native_forward = trtkins_forward, .native_inverse = trtkins_inverse,
+    .identity_first_allowed = 1,
 };

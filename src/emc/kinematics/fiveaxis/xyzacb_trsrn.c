@@ -1,14 +1,30 @@
-/* xyzacb_trsrn.c: xyzacb_trsrn, rotary table A, spindle rotary C, nutating B; 0 identity, 1 TCP. */
+/* xyzacb_trsrn.c: xyzacb_trsrn (rotary table A, nutating secondary B, primary spindle rotary C); types 0 identity, 1 TCP, 2 TOOL. */
 #include "rtapi.h"
-#include "rotary_math.h"
-#include "tcpswitch.h"
+#include "emc/kinematics/kins_template.h"
 #include "trsrn.h"
 
-MODULE_DESCRIPTION("Switchable kinematics: rotary table A, spindle rotary C with nutating B head");
+MODULE_DESCRIPTION("Switchable kinematics: rotary table A, nutating secondary B, primary spindle rotary C");
 
-/* Table about X, nutation axis leaning from Y. */
-const trsrn_variant_t trsrn_variant = {ROT_X, ROT_Y};
+static const trsrn_module_t module = {TRSRN_ACB, "xyzacb_trsrn_kins", "y-pivot", "y-rot-axis"};
 
-const tcpswitch_def_t tcpswitch_def = {
-    "xyzacb_trsrn", "xyzacb-trsrn", "XYZACB", trsrn_setup, trsrn_tcp_forward, trsrn_tcp_inverse
+/* The kinematics pins, at the first type query. */
+static int setup(int comp_id)
+{
+    return trsrn_setup_pins(comp_id, &module);
+}
+
+/* Joints -> world of type t. */
+static int forward(int t, const double *joints, EmcPose *pos)
+{
+    return trsrn_forward(&module, t, joints, pos);
+}
+
+/* World -> joints of type t. */
+static int inverse(int t, const EmcPose *pos, double *joints)
+{
+    return trsrn_inverse(&module, t, pos, joints);
+}
+
+const kins_template_def_t kins_template_def = {
+    "xyzacb_trsrn", "xyzacb-trsrn", trsrn_instance, setup, 3, forward, inverse,
 };

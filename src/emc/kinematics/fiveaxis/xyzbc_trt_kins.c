@@ -9,5 +9,7 @@ MODULE_DESCRIPTION("Switchable kinematics for a trunnion table: tilt B (about Y)
 const trtkins_variant_t trtkins_variant = {"xyzbc-trt-kins", "XYZBC", ROT_Y, 4};
 
 const switchkins_def_t switchkins_def = {
-    "xyzbc-trt-kins", "XYZBC", KINEMATICS_BOTH, trtkins_setup, trtkins_forward, trtkins_inverse, 1
+    .name = "xyzbc-trt-kins", .default_coordinates = "XYZBC", .native_type = KINEMATICS_BOTH,
+    .setup = trtkins_setup, .native_forward = trtkins_forward, .native_inverse = trtkins_inverse,
+    .identity_first_allowed = 1,
 };

@@ -1,14 +1,30 @@
-/* xyzbca_trsrn.c: xyzbca_trsrn, rotary table B, spindle rotary C, nutating A; 0 identity, 1 TCP. */
+/* xyzbca_trsrn.c: xyzbca_trsrn (rotary table B, nutating secondary A, primary spindle rotary C); types 0 identity, 1 TCP, 2 TOOL. */
 #include "rtapi.h"
-#include "rotary_math.h"
-#include "tcpswitch.h"
+#include "emc/kinematics/kins_template.h"
 #include "trsrn.h"
 
-MODULE_DESCRIPTION("Switchable kinematics: rotary table B, spindle rotary C with nutating A head");
+MODULE_DESCRIPTION("Switchable kinematics: rotary table B, nutating secondary A, primary spindle rotary C");
 
-/* Table about Y, nutation axis leaning from X. */
-const trsrn_variant_t trsrn_variant = {ROT_Y, ROT_X};
+static const trsrn_module_t module = {TRSRN_BCA, "xyzbca_trsrn_kins", "x-pivot", "x-rot-axis"};
 
-const tcpswitch_def_t tcpswitch_def = {
-    "xyzbca_trsrn", "xyzbca-trsrn", "XYZBCA", trsrn_setup, trsrn_tcp_forward, trsrn_tcp_inverse
+/* The kinematics pins, at the first type query. */
+static int setup(int comp_id)
+{
+    return trsrn_setup_pins(comp_id, &module);
+}
+
+/* Joints -> world of type t. */
+static int forward(int t, const double *joints, EmcPose *pos)
+{
+    return trsrn_forward(&module, t, joints, pos);
+}
+
+/* World -> joints of type t. */
+static int inverse(int t, const EmcPose *pos, double *joints)
+{
+    return trsrn_inverse(&module, t, pos, joints);
+}
+
+const kins_template_def_t kins_template_def = {
+    "xyzbca_trsrn", "xyzbca-trsrn", trsrn_instance, setup, 3, forward, inverse,
 };

@@ -1,4 +1,4 @@
-/* genhex_math.h: Stewart-platform (hexapod) kinematics without HAL: strut lengths and their inverse. */
+/* genhex_math.h: Stewart-platform (hexapod) kinematics without HAL, as LinuxCNC's genhexkins computes them. */
 #ifndef GENHEX_MATH_H
 #define GENHEX_MATH_H
 
@@ -18,35 +18,35 @@ typedef struct {
     PmCartesian platform[GENHEX_STRUTS];   /* platform joint centres, platform frame */
     PmCartesian base_n[GENHEX_STRUTS];     /* base joint axis unit vectors, world frame */
     PmCartesian platform_n[GENHEX_STRUTS]; /* platform joint axis unit vectors, platform frame */
-    double screw_lead;                     /* strut screw lead; 0 turns the twist correction off */
-    double tool_length;                    /* spindle offset + tool offset along platform -Z */
+    double screw_lead;                     /* strut screw lead; 0 turns the strut correction off */
+    double z_offset;                       /* spindle offset + tool offset, added to every joint z */
 } genhex_geom_t;
 
 /* Stop rule and outcome of the iterative forward kinematics. */
 typedef struct {
-    double conv_criterion;       /* converged when every strut length error is below this */
-    double max_error;            /* a Newton step larger than this means the solve ran away */
+    double conv_criterion;       /* converged when every strut length error is at most this */
+    double max_error;            /* give up when the summed strut error leaves +-max_error */
     unsigned limit_iterations;   /* give up after this many Newton steps (at most GENHEX_MAX_ITERATIONS) */
     unsigned iterations;         /* out: steps taken by the last call */
-    double error;                /* out: largest strut length error at the end */
 } genhex_solve_t;
 
-/* Forward kinematics failures (inverse fails with GENHEX_DEGENERATE only). */
+/* Forward and inverse failures (LinuxCNC's return codes). */
 enum {
-    GENHEX_DEGENERATE = -1,      /* zero-length strut or joint axis along the strut */
-    GENHEX_SINGULAR = -2,        /* Jacobian cannot be inverted at the current guess */
-    GENHEX_NO_CONVERGENCE = -3,  /* iteration limit reached */
-    GENHEX_RUNAWAY = -4,         /* a step exceeded max_error or left the finite numbers */
+    GENHEX_DEGENERATE = -1,      /* a strut <= 0 or of zero length */
+    GENHEX_RUNAWAY = -2,         /* the summed strut error left +-max_error (or a singular Jacobian) */
+    GENHEX_NO_CONVERGENCE = -5,  /* iteration limit reached */
 };
 
-/* Fill in the default geometry (the LinuxCNC sample hexapod). */
+/* Fill in the default geometry (LinuxCNC's sample hexapod). */
 void genhex_default_geometry(genhex_geom_t *geom);
 /* Rotation matrix Rz(c) Ry(b) Rx(a), angles in degrees, rows in m[0..2]. */
 void genhex_rotation(double a_deg, double b_deg, double c_deg, double m[3][3]);
-/* Pose -> six strut lengths (twist correction included); 0 or GENHEX_DEGENERATE. */
-int genhex_inverse(const genhex_geom_t *geom, const EmcPose *pos, double lengths[GENHEX_STRUTS]);
-/* Strut lengths -> pose by Newton-Raphson from the guess in *pos; 0 or a failure code,
- * *pos is only changed on success. */
+/* Pose -> six strut lengths (screw correction included, each in corrections[] when not NULL);
+ * 0 or GENHEX_DEGENERATE. */
+int genhex_inverse(const genhex_geom_t *geom, const EmcPose *pos, double lengths[GENHEX_STRUTS],
+                   double corrections[GENHEX_STRUTS]);
+/* Strut lengths -> pose by Newton-Raphson from the guess in *pos; 0 or a failure code, *pos is only
+ * changed on success. */
 int genhex_forward(const genhex_geom_t *geom, const double lengths[GENHEX_STRUTS], EmcPose *pos,
                    genhex_solve_t *solve);
 

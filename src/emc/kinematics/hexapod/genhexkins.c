@@ -1,4 +1,5 @@
-/* genhexkins.c: switchable hexapod kinematics module: geometry pins and glue to genhex_math. */
+/* genhexkins.c: switchable hexapod kinematics module (LinuxCNC genhexkins): geometry pins, the solver
+ * pins, the pose it solved and the skgui pose for GUIs. */
 #include <math.h>
 #include "rtapi.h"
 #include "hal.h"
@@ -7,7 +8,7 @@
 
 MODULE_DESCRIPTION("Generalized hexapod (Stewart platform) kinematics, switchable");
 
-#define GUI_AXES 6
+#define POSE_AXES 6
 
 /* One x/y/z triple of pins. */
 typedef struct {
@@ -21,84 +22,103 @@ typedef struct {
     hal_float_t *spindle_offset, *tool_offset, *screw_lead;
     hal_float_t *conv_criterion, *max_error;
     hal_u32_t *limit_iterations, *last_iterations, *max_iterations;
-    hal_float_t *gui[GUI_AXES];   /* skgui.x/y/z/a/b/c */
+    hal_bit_t *fwd_kins_fail;
+    hal_float_t *correction[GENHEX_STRUTS];
+    hal_float_t *pose[POSE_AXES];  /* genhexkins.x/y/z/a/b/c: the last solved pose */
+    hal_float_t *gui[POSE_AXES];   /* skgui.x/y/z/a/b/c */
 } genhex_pins_t;
 
 static genhex_pins_t *pins;
-static EmcPose last_pose;         /* guess for the next forward call */
-static int have_last_pose;
+static EmcPose saved_pose;        /* last forward result of the native kinematics */
+static int fresh_switch;          /* the native type was just selected: start from saved_pose */
 
 /* Pin values -> geometry for the math. */
 static void read_geometry(genhex_geom_t *g)
 {
     for (int i = 0; i < GENHEX_STRUTS; i++) {
         g->base[i] = (PmCartesian){*pins->base[i].x, *pins->base[i].y, *pins->base[i].z};
-        g->platform[i] = (PmCartesian){*pins->platform[i].x, *pins->platform[i].y,
-                                       *pins->platform[i].z};
+        g->platform[i] = (PmCartesian){*pins->platform[i].x, *pins->platform[i].y, *pins->platform[i].z};
         g->base_n[i] = (PmCartesian){*pins->base_n[i].x, *pins->base_n[i].y, *pins->base_n[i].z};
         g->platform_n[i] = (PmCartesian){*pins->platform_n[i].x, *pins->platform_n[i].y,
                                          *pins->platform_n[i].z};
     }
     g->screw_lead = *pins->screw_lead;
-    g->tool_length = *pins->spindle_offset + *pins->tool_offset;
+    g->z_offset = *pins->spindle_offset + *pins->tool_offset;
 }
 
-/* The last-resort start guess: platform level, at the height strut 0 allows. */
-static void upright_guess(const genhex_geom_t *g, const double *joints, EmcPose *guess)
+/* Write a pose to six pins x y z a b c. */
+static void put_pose(hal_float_t *const *out, const EmcPose *p)
 {
-    double dx = g->platform[0].x - g->base[0].x, dy = g->platform[0].y - g->base[0].y;
-    double h2 = joints[0] * joints[0] - dx * dx - dy * dy;
-    *guess = (EmcPose){{0.0, 0.0, h2 > 1.0 ? sqrt(h2) : 1.0}, 0, 0, 0, 0, 0, 0};
+    const double v[POSE_AXES] = {p->tran.x, p->tran.y, p->tran.z, p->a, p->b, p->c};
+    for (int i = 0; i < POSE_AXES; i++)
+        *out[i] = v[i];
 }
 
-/* Publish the iteration figures and the pose on skgui.*. */
-static void report(const genhex_solve_t *s, const EmcPose *pos)
-{
-    *pins->last_iterations = s->iterations;
-    if (s->iterations > *pins->max_iterations)
-        *pins->max_iterations = s->iterations;
-    const double v[GUI_AXES] = {pos->tran.x, pos->tran.y, pos->tran.z, pos->a, pos->b, pos->c};
-    for (int i = 0; i < GUI_AXES; i++)
-        *pins->gui[i] = v[i];
-}
-
-/* Strut lengths (joints 0..5) -> pose, starting from the caller's pose, then the last
- * solution, then an upright guess; -1 when none converges. */
-static int genhex_fwd(const double *joints, EmcPose *pos)
+/* Solve strut lengths for a pose starting from *pose; sets the status pins; 0 or a failure code. */
+static int solve(const double *joints, EmcPose *pose)
 {
     genhex_geom_t g;
-    genhex_solve_t s = {*pins->conv_criterion, *pins->max_error, *pins->limit_iterations, 0, 0.0};
-    EmcPose guess[3];
-    int n = 0, r = -1, i;
+    genhex_solve_t s = {*pins->conv_criterion, *pins->max_error, *pins->limit_iterations, 0};
     read_geometry(&g);
-    guess[n++] = *pos;
-    if (have_last_pose)
-        guess[n++] = last_pose;
-    upright_guess(&g, joints, &guess[n++]);
-    for (i = 0; i < n; i++) {
-        r = genhex_forward(&g, joints, &guess[i], &s);
-        if (r == 0)
-            break;
-    }
+    for (int i = 0; i < GENHEX_STRUTS; i++)
+        if (!(joints[i] > 0))
+            return GENHEX_DEGENERATE;
+    int r = genhex_forward(&g, joints, pose, &s);
+    *pins->fwd_kins_fail = r != 0;
+    if (r != 0)
+        return r;
     *pins->last_iterations = s.iterations;
-    if (r < 0)
-        return -1;
-    report(&s, &guess[i]);
-    last_pose = guess[i];
-    have_last_pose = 1;
-    pos->tran = guess[i].tran;
-    pos->a = guess[i].a;
-    pos->b = guess[i].b;
-    pos->c = guess[i].c;
+    if (s.iterations > *pins->max_iterations)
+        *pins->max_iterations = s.iterations;
+    put_pose(pins->pose, pose);
     return 0;
 }
 
-/* Pose -> strut lengths (joints 0..5). */
+/* Strut lengths (joints 0..5) -> pose, from the pose given (or the saved one just after a switch). */
+static int genhex_fwd(const double *joints, EmcPose *pos)
+{
+    EmcPose p = fresh_switch ? saved_pose : *pos;
+    fresh_switch = 0;
+    int r = solve(joints, &p);
+    saved_pose = p;
+    if (r == 0) {
+        pos->tran = p.tran;
+        pos->a = p.a;
+        pos->b = p.b;
+        pos->c = p.c;
+    }
+    return r;
+}
+
+/* After any successful forward: the native solution from the saved pose on skgui.*. */
+static int genhex_gui(const double *joints)
+{
+    EmcPose p = saved_pose;
+    int r = solve(joints, &p);
+    saved_pose = p;
+    if (r == 0)
+        put_pose(pins->gui, &p);
+    return r;
+}
+
+/* Selecting the native type makes its next forward start from the saved pose. */
+static void genhex_switched(int new_type)
+{
+    if (new_type == 0)
+        fresh_switch = 1;
+}
+
+/* Pose -> strut lengths (joints 0..5); with a screw lead, correction.N shows each length change. */
 static int genhex_inv(const EmcPose *pos, double *joints)
 {
     genhex_geom_t g;
+    double corr[GENHEX_STRUTS];
     read_geometry(&g);
-    return genhex_inverse(&g, pos, joints);
+    int r = genhex_inverse(&g, pos, joints, corr);
+    if (r == 0 && g.screw_lead != 0.0)
+        for (int i = 0; i < GENHEX_STRUTS; i++)
+            *pins->correction[i] = corr[i];
+    return r;
 }
 
 /* Make base.N / platform.N style pins named "genhexkins.<what>.N.x/y/z" with defaults. */
@@ -125,15 +145,14 @@ static int scalar_pins(int comp_id)
     int r = hal_pin_float_newf(HAL_IN, &pins->spindle_offset, comp_id, "genhexkins.spindle-offset");
     if (r == 0) r = hal_pin_float_newf(HAL_IN, &pins->tool_offset, comp_id, "genhexkins.tool-offset");
     if (r == 0) r = hal_pin_float_newf(HAL_IN, &pins->screw_lead, comp_id, "genhexkins.screw-lead");
-    if (r == 0) r = hal_pin_float_newf(HAL_IN, &pins->conv_criterion, comp_id,
-                                       "genhexkins.convergence-criterion");
-    if (r == 0) r = hal_pin_u32_newf(HAL_IN, &pins->limit_iterations, comp_id,
-                                     "genhexkins.limit-iterations");
+    if (r == 0) r = hal_pin_float_newf(HAL_IN, &pins->conv_criterion, comp_id, "genhexkins.convergence-criterion");
+    if (r == 0) r = hal_pin_u32_newf(HAL_IN, &pins->limit_iterations, comp_id, "genhexkins.limit-iterations");
     if (r == 0) r = hal_pin_float_newf(HAL_IN, &pins->max_error, comp_id, "genhexkins.max-error");
-    if (r == 0) r = hal_pin_u32_newf(HAL_OUT, &pins->last_iterations, comp_id,
-                                     "genhexkins.last-iterations");
-    if (r == 0) r = hal_pin_u32_newf(HAL_OUT, &pins->max_iterations, comp_id,
-                                     "genhexkins.max-iterations");
+    if (r == 0) r = hal_pin_u32_newf(HAL_OUT, &pins->last_iterations, comp_id, "genhexkins.last-iterations");
+    if (r == 0) r = hal_pin_u32_newf(HAL_OUT, &pins->max_iterations, comp_id, "genhexkins.max-iterations");
+    if (r == 0) r = hal_pin_bit_newf(HAL_OUT, &pins->fwd_kins_fail, comp_id, "genhexkins.fwd-kins-fail");
+    for (int i = 0; i < GENHEX_STRUTS && r == 0; i++)
+        r = hal_pin_float_newf(HAL_OUT, &pins->correction[i], comp_id, "genhexkins.correction.%d", i);
     if (r < 0)
         return r;
     *pins->conv_criterion = 1e-9;
@@ -142,12 +161,14 @@ static int scalar_pins(int comp_id)
     return 0;
 }
 
-/* skgui.x/y/z/a/b/c: the pose of the last successful native forward solve. */
-static int gui_pins(int comp_id)
+/* genhexkins.x..c and skgui.x..c: IN pins the module writes (as LinuxCNC has them). */
+static int pose_pins(int comp_id)
 {
-    static const char axis[GUI_AXES] = {'x', 'y', 'z', 'a', 'b', 'c'};
-    for (int i = 0; i < GUI_AXES; i++) {
-        int r = hal_pin_float_newf(HAL_OUT, &pins->gui[i], comp_id, "skgui.%c", axis[i]);
+    static const char axis[POSE_AXES] = {'x', 'y', 'z', 'a', 'b', 'c'};
+    for (int i = 0; i < POSE_AXES; i++) {
+        int r = hal_pin_float_newf(HAL_IN, &pins->pose[i], comp_id, "genhexkins.%c", axis[i]);
+        if (r == 0)
+            r = hal_pin_float_newf(HAL_IN, &pins->gui[i], comp_id, "skgui.%c", axis[i]);
         if (r < 0)
             return r;
     }
@@ -160,7 +181,7 @@ static int genhex_setup(int comp_id, const char *sparm)
     genhex_geom_t g;
     (void)sparm;
     genhex_default_geometry(&g);
-    have_last_pose = 0;
+    saved_pose = (EmcPose){{0, 0, 0}, 0, 0, 0, 0, 0, 0};
     pins = hal_malloc(sizeof(*pins));
     if (!pins)
         return -ENOMEM;
@@ -169,11 +190,13 @@ static int genhex_setup(int comp_id, const char *sparm)
     if (r == 0) r = vec_pins(comp_id, "base-n", pins->base_n, g.base_n);
     if (r == 0) r = vec_pins(comp_id, "platform-n", pins->platform_n, g.platform_n);
     if (r == 0) r = scalar_pins(comp_id);
-    if (r == 0) r = gui_pins(comp_id);
+    if (r == 0) r = pose_pins(comp_id);
     return r;
 }
 
-/* What the switchable frame needs: name, identity map, type, setup and the two directions. */
+/* What the switchable frame needs: name, identity map, type, setup, the two directions, the GUI pose. */
 const switchkins_def_t switchkins_def = {
-    "genhexkins", "XYZABC", KINEMATICS_BOTH, genhex_setup, genhex_fwd, genhex_inv, 0,
+    .name = "genhexkins", .default_coordinates = "XYZABC", .native_type = KINEMATICS_BOTH,
+    .setup = genhex_setup, .native_forward = genhex_fwd, .native_inverse = genhex_inv,
+    .after_forward = genhex_gui, .on_switch = genhex_switched,
 };

@@ -1,62 +1,50 @@
-/* millturn.c: switchable mill-turn kinematics: type 0 turning (X/Z swapped), type 1 milling (identity). */
+/* millturn.c: mill-turn kinematics (LinuxCNC's userkins-template module): type 0 milling (identity),
+ * type 1 turning (X = joint 2, Y = -joint 1, Z = joint 0). */
 #include "rtapi.h"
 #include "hal.h"
-#include "emc/kinematics/switchkins.h"
+#include "emc/kinematics/kins_template.h"
+#include "emc/kinematics/kins_demo.h"
 #include "millturn_math.h"
 
-MODULE_DESCRIPTION("Mill-turn kinematics: turning (type 0) and milling (type 1)");
+MODULE_DESCRIPTION("Mill-turn kinematics: milling (type 0) and turning (type 1)");
 
-#define MILLTURN_SLIDES 3   /* joints 0..2 are the X, Y and Z slides */
-
-/* Joints beyond the slides follow their coordinates= letters (rotaries, U V W). */
-static void extra_forward(const double *joints, EmcPose *pos)
+/* The demo echo pins and kinstype.is-0/1, at the first type query. */
+static int setup(int comp_id)
 {
-    const kins_coords_t *map = switchkins_coords();
-    for (int j = MILLTURN_SLIDES; j < map->joint_count; j++)
-        kins_pose_set(pos, map->axis_of_joint[j], joints[j]);
+    return kins_demo_echo_pins(comp_id, "millturn");
 }
 
-/* Joints beyond the slides take their axis. */
-static void extra_inverse(const EmcPose *pos, double *joints)
+/* Joints -> world: X Y Z A from joints 0..3 (turning swaps the slides); B C U V W are 0. */
+static int forward(int t, const double *joints, EmcPose *pos)
 {
-    const kins_coords_t *map = switchkins_coords();
-    for (int j = MILLTURN_SLIDES; j < map->joint_count; j++)
-        joints[j] = kins_pose_get(pos, map->axis_of_joint[j]);
-}
-
-/* Turning forward: swapped slides plus the extra joints. */
-static int millturn_fwd(const double *joints, EmcPose *pos)
-{
-    millturn_turn_forward(joints, pos);
-    extra_forward(joints, pos);
-    return 0;
-}
-
-/* Turning inverse: swapped slides plus the extra joints. */
-static int millturn_inv(const EmcPose *pos, double *joints)
-{
-    millturn_turn_inverse(pos, joints);
-    extra_inverse(pos, joints);
-    return 0;
-}
-
-/* The first three joints must be the X, Y and Z slides for the swap to mean anything. */
-static int millturn_setup(int comp_id, const char *sparm)
-{
-    const kins_coords_t *map = switchkins_coords();
-    (void)comp_id;
-    (void)sparm;
-    for (int j = 0; j < MILLTURN_SLIDES; j++) {
-        if (j >= map->joint_count || map->axis_of_joint[j] != j) {
-            rtapi_print_msg(RTAPI_MSG_ERR,
-                            "millturn: ERROR: coordinates must start with XYZ (joints 0..2)\n");
-            return -EINVAL;
-        }
+    kins_demo_echo_forward("millturn");
+    if (t == 1) {
+        millturn_turn_forward(joints, pos);
+    } else {
+        pos->tran.x = joints[0];
+        pos->tran.y = joints[1];
+        pos->tran.z = joints[2];
     }
+    pos->a = joints[3];
+    pos->b = pos->c = pos->u = pos->v = pos->w = 0;
     return 0;
 }
 
-/* What the switchable frame needs: name, identity map, type, setup and the two directions. */
-const switchkins_def_t switchkins_def = {
-    "millturn", "XYZC", KINEMATICS_BOTH, millturn_setup, millturn_fwd, millturn_inv, 0,
+/* World -> joints 0..3 (turning swaps the slides); in is echoed on out. */
+static int inverse(int t, const EmcPose *pos, double *joints)
+{
+    kins_demo_echo_inverse();
+    if (t == 1) {
+        millturn_turn_inverse(pos, joints);
+    } else {
+        joints[0] = pos->tran.x;
+        joints[1] = pos->tran.y;
+        joints[2] = pos->tran.z;
+    }
+    joints[3] = pos->a;
+    return 0;
+}
+
+const kins_template_def_t kins_template_def = {
+    "millturn", "millturn", kins_demo_instance, setup, 2, forward, inverse,
 };

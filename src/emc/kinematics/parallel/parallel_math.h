@@ -30,7 +30,7 @@ typedef struct {
     double platform_radius;   /* centre to motor axis */
     double thigh_length;      /* motor axis to knee */
     double shin_length;       /* knee to effector joint */
-    double effector_radius;   /* effector centre to shin joint */
+    double effector_radius;   /* effector centre to shin joint (the footradius pin) */
 } rotarydelta_geom_t;
 /* Effector from thigh angles J0..J2 (degrees); -1 when the shins cannot meet. */
 int rotarydelta_forward(const rotarydelta_geom_t *g, const double *joints, EmcPose *pos);
@@ -61,21 +61,22 @@ void rose_inverse(rose_state_t *s, const EmcPose *pos, double *joints);
 /* Hard cap on Newton steps per forward call, whatever limit-iterations says (bounded cycle time). */
 #define PENTA_MAX_ITERATIONS 1000
 
-/* Pentapod: five struts from base points to rings around the tool axis. */
+/* Pentapod: five struts from base points to rings around the spindle axis (LinuxCNC's pentakins). */
 typedef struct {
-    double base[PENTA_STRUTS][3];    /* base joint positions */
-    double ring_r[PENTA_STRUTS];     /* ring radius around the tool axis */
-    double ring_z[PENTA_STRUTS];     /* ring height along the tool axis */
-    double convergence;              /* forward stops when every strut error is below */
+    double base[PENTA_STRUTS][3];    /* base joint positions, world (tool offset already added to z) */
+    double ring_r[PENTA_STRUTS];     /* effector ring radius around the spindle axis */
+    double ring_z[PENTA_STRUTS];     /* effector ring height along the spindle axis (tool offset added) */
+    double convergence;              /* forward stops when every strut error is at most this */
     unsigned limit_iterations;       /* forward gives up after this many steps (at most PENTA_MAX_ITERATIONS) */
-    double max_error;                /* forward gives up when a step is larger */
+    double max_error;                /* forward gives up when the summed strut error leaves +-max_error */
 } penta_geom_t;
 
 /* The default pentapod geometry. */
 extern const penta_geom_t penta_default_geom;
-/* Strut lengths for X Y Z A B (A about X, then B about Y, degrees); C U V W pass to J5..J8. */
+/* Strut lengths for X Y Z A B (A roll, B pitch, degrees; R = Ry(B) Rx(A)); C U V W pass to J5..J8. */
 int penta_inverse(const penta_geom_t *g, const EmcPose *pos, double *joints);
-/* Newton solve from the pose in *pos as the first guess; iterations used, -1 on failure. */
+/* Newton solve from the pose in *pos as the first guess; steps used in *iterations. 0, or -1 for a
+ * strut <= 0, -2 when the error leaves +-max_error, -5 past limit_iterations (pose untouched). */
 int penta_forward(const penta_geom_t *g, const double *joints, EmcPose *pos, unsigned *iterations);
 
 #ifdef __cplusplus

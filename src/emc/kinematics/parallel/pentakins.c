@@ -1,4 +1,4 @@
-/* pentakins.c: pentapod kinematics; base/ring geometry and Newton-solver pins. */
+/* pentakins.c: pentapod kinematics (LinuxCNC pentakins): geometry params, tool offset and Newton-solver pins. */
 #include "rtapi.h"
 #include "hal.h"
 #include "emc/kinematics/kins_frame.h"
@@ -6,11 +6,12 @@
 
 MODULE_DESCRIPTION("Pentapod kinematics (five struts, X Y Z A B)");
 
-/* Geometry and solver pins in HAL memory. */
+/* Geometry params and solver pins in HAL memory. */
 typedef struct {
-    hal_float_t *base[PENTA_STRUTS][3];
-    hal_float_t *ring_r[PENTA_STRUTS];
-    hal_float_t *ring_z[PENTA_STRUTS];
+    hal_float_t base[PENTA_STRUTS][3];
+    hal_float_t ring_r[PENTA_STRUTS];
+    hal_float_t ring_z[PENTA_STRUTS];
+    hal_float_t *tool_offset;
     hal_float_t *convergence;
     hal_u32_t *limit_iterations;
     hal_float_t *max_error;
@@ -20,30 +21,34 @@ typedef struct {
 
 static penta_pins_t *pins;
 
-/* Current geometry and solver limits from the pins. */
+/* Current geometry and solver limits; the tool offset moves every base and effector height. */
 static void geometry(penta_geom_t *g)
 {
+    double t = *pins->tool_offset;
     for (int k = 0; k < PENTA_STRUTS; k++) {
         for (int i = 0; i < 3; i++)
-            g->base[k][i] = *pins->base[k][i];
-        g->ring_r[k] = *pins->ring_r[k];
-        g->ring_z[k] = *pins->ring_z[k];
+            g->base[k][i] = pins->base[k][i];
+        g->base[k][2] += t;
+        g->ring_r[k] = pins->ring_r[k];
+        g->ring_z[k] = pins->ring_z[k] + t;
     }
     g->convergence = *pins->convergence;
     g->limit_iterations = *pins->limit_iterations;
     g->max_error = *pins->max_error;
 }
 
-/* Strut lengths -> pose by Newton iteration from the given pose; records iteration counts. */
+/* Strut lengths -> pose by Newton iteration from the given pose; records iteration counts on success. */
 static int penta_fwd(const double *joint, EmcPose *world)
 {
     penta_geom_t g;
     unsigned used = 0;
     geometry(&g);
     int rc = penta_forward(&g, joint, world, &used);
-    *pins->last_iterations = used;
-    if (used > *pins->max_iterations)
-        *pins->max_iterations = used;
+    if (rc == 0) {
+        *pins->last_iterations = used;
+        if (used > *pins->max_iterations)
+            *pins->max_iterations = used;
+    }
     return rc;
 }
 
@@ -55,37 +60,34 @@ static int penta_inv(const EmcPose *world, double *joint)
     return penta_inverse(&g, world, joint);
 }
 
-/* Create pentakins.base.N.x/y/z and effector.N.r/z for one strut, with defaults. */
-static int strut_pins(int comp_id, int k)
+/* Params pentakins.base.N.x/y/z and effector.N.r/z of one strut, with defaults. */
+static int strut_params(int comp_id, int k)
 {
     static const char axis[3] = {'x', 'y', 'z'};
     for (int i = 0; i < 3; i++) {
-        if (hal_pin_float_newf(HAL_IN, &pins->base[k][i], comp_id, "pentakins.base.%d.%c",
-                               k, axis[i]) < 0)
+        if (hal_param_float_newf(HAL_RW, &pins->base[k][i], comp_id, "pentakins.base.%d.%c", k, axis[i]) < 0)
             return -EINVAL;
-        *pins->base[k][i] = penta_default_geom.base[k][i];
+        pins->base[k][i] = penta_default_geom.base[k][i];
     }
-    if (hal_pin_float_newf(HAL_IN, &pins->ring_r[k], comp_id, "pentakins.effector.%d.r", k) < 0
-        || hal_pin_float_newf(HAL_IN, &pins->ring_z[k], comp_id, "pentakins.effector.%d.z", k) < 0)
+    if (hal_param_float_newf(HAL_RW, &pins->ring_r[k], comp_id, "pentakins.effector.%d.r", k) < 0
+        || hal_param_float_newf(HAL_RW, &pins->ring_z[k], comp_id, "pentakins.effector.%d.z", k) < 0)
         return -EINVAL;
-    *pins->ring_r[k] = penta_default_geom.ring_r[k];
-    *pins->ring_z[k] = penta_default_geom.ring_z[k];
+    pins->ring_r[k] = penta_default_geom.ring_r[k];
+    pins->ring_z[k] = penta_default_geom.ring_z[k];
     return 0;
 }
 
-/* Create the solver pins with their defaults. */
+/* Tool offset and solver pins with their defaults. */
 static int solver_pins(int comp_id)
 {
-    if (hal_pin_float_newf(HAL_IN, &pins->convergence, comp_id,
-                           "pentakins.convergence-criterion") < 0
-        || hal_pin_u32_newf(HAL_IN, &pins->limit_iterations, comp_id,
-                            "pentakins.limit-iterations") < 0
-        || hal_pin_float_newf(HAL_IN, &pins->max_error, comp_id, "pentakins.max-error") < 0
-        || hal_pin_u32_newf(HAL_OUT, &pins->last_iterations, comp_id,
-                            "pentakins.last-iterations") < 0
-        || hal_pin_u32_newf(HAL_OUT, &pins->max_iterations, comp_id,
-                            "pentakins.max-iterations") < 0)
+    if (hal_pin_float_newf(HAL_IN, &pins->tool_offset, comp_id, "pentakins.tool-offset") < 0
+        || hal_pin_float_newf(HAL_IO, &pins->convergence, comp_id, "pentakins.convergence-criterion") < 0
+        || hal_pin_u32_newf(HAL_IO, &pins->limit_iterations, comp_id, "pentakins.limit-iterations") < 0
+        || hal_pin_float_newf(HAL_IO, &pins->max_error, comp_id, "pentakins.max-error") < 0
+        || hal_pin_u32_newf(HAL_OUT, &pins->last_iterations, comp_id, "pentakins.last-iterations") < 0
+        || hal_pin_u32_newf(HAL_OUT, &pins->max_iterations, comp_id, "pentakins.max-iterations") < 0)
         return -EINVAL;
+    *pins->tool_offset = 0;
     *pins->convergence = penta_default_geom.convergence;
     *pins->limit_iterations = penta_default_geom.limit_iterations;
     *pins->max_error = penta_default_geom.max_error;
@@ -94,14 +96,14 @@ static int solver_pins(int comp_id)
     return 0;
 }
 
-/* Create every pin. */
+/* Create every pin and param. */
 static int make_pins(int comp_id)
 {
     pins = hal_malloc(sizeof(*pins));
     if (!pins)
         return -ENOMEM;
     for (int k = 0; k < PENTA_STRUTS; k++)
-        if (strut_pins(comp_id, k) < 0)
+        if (strut_params(comp_id, k) < 0)
             return -EINVAL;
     return solver_pins(comp_id);
 }

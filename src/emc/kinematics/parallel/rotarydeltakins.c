@@ -1,4 +1,4 @@
-/* rotarydeltakins.c: rotary delta kinematics with platform, thigh, shin and effector pins. */
+/* rotarydeltakins.c: rotary delta kinematics with platform, thigh, shin and foot (effector) radius pins. */
 #include "rtapi.h"
 #include "hal.h"
 #include "emc/kinematics/kins_frame.h"
@@ -9,7 +9,7 @@ MODULE_DESCRIPTION("Rotary delta kinematics (three motors turning thighs)");
 
 /* rotarydeltakins.* geometry pins with their defaults. */
 static const kins_pin_def_t rotarydelta_pin_defs[4] = {
-    {"platformradius", 10.0}, {"thighlength", 10.0}, {"shinlength", 14.0}, {"effectorradius", 2.0}
+    {"platformradius", 10.0}, {"thighlength", 10.0}, {"shinlength", 14.0}, {"footradius", 6.0}
 };
 
 /* The geometry pins, in rotarydelta_pin_defs order. */

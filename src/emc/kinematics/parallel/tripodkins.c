@@ -40,10 +40,10 @@ static int tripod_inv(const EmcPose *world, double *joint,
     return tripod_inverse(&g, world, joint);
 }
 
-/* Create tripodkins.Bx, .Cx, .Cy (float IN), all 1.0. */
+/* Create tripodkins.Bx, .Cx, .Cy (float I/O, as LinuxCNC has them), all 1.0. */
 static int make_pins(int comp_id)
 {
-    return kins_float_pins(comp_id, "tripodkins", tripod_pin_defs, 3, &pins);
+    return kins_float_pins_dir(comp_id, "tripodkins", tripod_pin_defs, 3, HAL_IO, &pins);
 }
 
 const kins_frame_def_t kins_frame_def = {

@@ -1,4 +1,4 @@
-/* arm6_module.c: HAL glue shared by the 6R spherical-wrist arm modules (pumakins, three21kins). */
+/* arm6_module.c: HAL glue of the 6R spherical-wrist arm module pumakins. */
 #include "rtapi.h"
 #include "hal.h"
 #include "arm6_module.h"

@@ -1,4 +1,4 @@
-/* arm6_module.h: HAL glue shared by the 6R spherical-wrist arm modules (pumakins, three21kins). */
+/* arm6_module.h: HAL glue of the 6R spherical-wrist arm module pumakins (geometry pins from a table). */
 #ifndef ARM6_MODULE_H
 #define ARM6_MODULE_H
 

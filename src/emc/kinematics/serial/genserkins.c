@@ -127,5 +127,6 @@ static int genser_setup(int comp_id, const char *sparm)
 }
 
 const switchkins_def_t switchkins_def = {
-    "genserkins", "XYZABC", KINEMATICS_BOTH, genser_setup, genser_fwd, genser_inv, 0,
+    .name = "genserkins", .default_coordinates = "XYZABC", .native_type = KINEMATICS_BOTH,
+    .setup = genser_setup, .native_forward = genser_fwd, .native_inverse = genser_inv,
 };

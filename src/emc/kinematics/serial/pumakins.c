@@ -17,6 +17,6 @@ const arm6_module_t arm6_module = {"pumakins", puma_pin_defs, puma_members,
                                      sizeof(puma_members) / sizeof(puma_members[0])};
 
 const switchkins_def_t switchkins_def = {
-    "pumakins", "XYZABC", KINEMATICS_BOTH, arm6_module_setup, arm6_module_forward,
-    arm6_module_inverse, 0,
+    .name = "pumakins", .default_coordinates = "XYZABC", .native_type = KINEMATICS_BOTH,
+    .setup = arm6_module_setup, .native_forward = arm6_module_forward, .native_inverse = arm6_module_inverse,
 };

@@ -51,5 +51,6 @@ static int scara_setup(int comp_id, const char *sparm)
 }
 
 const switchkins_def_t switchkins_def = {
-    "scarakins", "XYZCAB", KINEMATICS_BOTH, scara_setup, scara_fwd, scara_inv, 0,
+    .name = "scarakins", .default_coordinates = "XYZCAB", .native_type = KINEMATICS_BOTH,
+    .setup = scara_setup, .native_forward = scara_fwd, .native_inverse = scara_inv,
 };

@@ -12,12 +12,23 @@ STOP_SIGNALS = {signal.SIGINT, signal.SIGTERM, signal.SIGHUP}
 
 
 def stop_user_components(session):
-    """SIGTERM every user-space component's process; SIGKILL those still there after a grace."""
+    """SIGTERM every user-space component's process; SIGKILL those still there after a grace.
+    Task (the owner of inihal) goes first, alone: it disables motion on its way out, so
+    motion (or motion-logger) must still be there, as in LinuxCNC's cleanup order."""
     comps = halstate.user_components(session.children)
+    task = sorted({pid for name, pid in comps if name == "inihal" and pid != os.getpid()})
+    if task:
+        signal_and_wait(session, task, [n for n, p in comps if p in task])
+        comps = halstate.user_components(session.children)
     pids = sorted({pid for _, pid in comps if pid != os.getpid()})
     if not pids:
         return
-    session.note("stopping user-space components: %s" % ", ".join(n for n, _ in comps))
+    signal_and_wait(session, pids, [n for n, _ in comps])
+
+
+def signal_and_wait(session, pids, names):
+    """SIGTERM pids, wait up to the grace, SIGKILL the survivors."""
+    session.note("stopping user-space components: %s" % ", ".join(names))
     for pid in pids:
         try:
             os.kill(pid, signal.SIGTERM)

@@ -1,129 +1,107 @@
-// comp_corner.cc: joining compensated moves at corners: convex corner arcs, concave trimming, gouge checks.
+// comp_corner.cc: joining compensated moves at corners: convex corner arcs, concave trims, tangents.
 #include <cmath>
 
 #include "comp_engine.hh"
 
 namespace cutcomp {
 
-// turns smaller than this (radians) count as tangent: no corner arc, no trimming, as the reference
-static const double TANGENT_TOLERANCE = 0.05;
-// near reversals (radians from a half turn) are decided by the curvature of the two moves
-static const double REVERSAL_TOLERANCE = 0.05;
-
-// convex corners get an arc about the programmed corner, concave ones are trimmed to the intersection
-Vec2 CompEngine::corner(const Joint &j)
+// the convex corner arc: tool radius about the programmed corner, at the held path's height
+void CompEngine::corner_arc(int line, Vec2 to, const Pose &end)
 {
-    double turn = turn_angle(end_dir_, j.dir);
-    if (M_PI - std::fabs(turn) < REVERSAL_TOLERANCE && end_kappa_ + j.kappa != 0)
-        turn = end_kappa_ + j.kappa > 0 ? -M_PI : M_PI;
-    double concave = left_ ? turn : -turn;
-    if (concave > TANGENT_TOLERANCE) {
-        Vec2 x = concave_point(j);
-        trim_held(x);
-        flush_all();
-        return x;
-    }
-    flush_all();
-    if (concave < -TANGENT_TOLERANCE) {
-        HeldMove arc;
-        arc.kind = HeldMove::ARC;
-        arc.line = s_.sequence_number;
-        arc.end = with_plane_point(ax_, tool_end_, j.start);
-        arc.center = j.corner_point;
-        arc.rotation = left_ ? -1 : 1;
-        emit_move(out_, ax_, arc, shift_);
-        tool_end_ = arc.end;
-        path_end_ = j.start;
-    }
-    return j.start;
+    HeldMove arc;
+    arc.kind = HeldMove::ARC;
+    arc.line = line;
+    arc.end = with_plane_point(ax_, end, to);
+    arc.end[ax_.perp] = cur_perp_;
+    arc.center = prog_;
+    arc.rotation = left_ ? -1 : 1;
+    queue_.push_move(arc);
 }
 
-// of the intersections, prefer one on both moves, then one on the held move, then the nearest
-Vec2 CompEngine::concave_point(const Joint &j)
+// A later straight move. theta is the direction from the programmed corner to the compensated
+// point (the held move's offset normal), alpha the new move's direction; beta, the corner angle
+// measured on the tool side, says convex (arc), concave (trim) or tangent (nothing).
+void CompEngine::next_line(HeldMove::Kind kind, int line, const Pose &end)
 {
-    Vec2 cand[2];
-    int n = intersections(end_shape_, j.shape, cand);
-    if (n == 0)
-        gouge_error();
-    HeldMove *m = queue_.last_plane_move();
-    int best = -1, best_score = -1;
-    for (int i = 0; i < n; i++) {
-        int score = (m && on_held(*m, cand[i]) ? 2 : 0) + (on_new(j, cand[i]) ? 1 : 0);
-        bool nearer = best >= 0 && distance(cand[i], path_end_) < distance(cand[best], path_end_);
-        if (score > best_score || (score == best_score && nearer)) {
-            best = i;
-            best_score = score;
-        }
-    }
-    return cand[best];
-}
-
-// position along the new move: lines by projection, arcs by swept angle
-bool CompEngine::on_new(const Joint &j, Vec2 x) const
-{
-    if (j.rotation == 0) {
-        double t = dot(x - j.start, j.dir);
-        return t > -1e-9 && t < distance(j.start, j.end);
-    }
-    double total = arc_sweep(j.shape.center, j.start, j.end, j.rotation);
-    if (total == 0)
-        total = 2 * M_PI;
-    double upto = arc_sweep(j.shape.center, j.start, x, j.rotation);
-    return upto < total || upto > 2 * M_PI - 1e-9;
-}
-
-// position along a held move: past its start and not beyond its end
-bool CompEngine::on_held(const HeldMove &m, Vec2 x) const
-{
-    Vec2 end = plane_point(ax_, m.end);
-    if (m.kind != HeldMove::ARC) {
-        double t = dot(x - m.start, m.dir);
-        return t > 0 && t <= dot(end - m.start, m.dir) + 1e-9;
-    }
-    double total = arc_sweep(m.center, m.arc_from, end, m.rotation);
-    if (total == 0)
-        total = 2 * M_PI;
-    double begin = arc_sweep(m.center, m.arc_from, m.start, m.rotation);
-    double upto = arc_sweep(m.center, m.arc_from, x, m.rotation);
-    return upto > begin && upto <= total + 1e-9;
-}
-
-// the gouging error naming the kind of the held move
-void CompEngine::gouge_error()
-{
-    HeldMove *m = queue_.last_plane_move();
-    HeldMove::Kind kind = m ? m->kind : HeldMove::FEED;
-    if (kind == HeldMove::ARC)
-        throw InterpError("Arc move in concave corner cannot be reached by the tool without "
-                          "gouging");
-    if (kind == HeldMove::TRAVERSE)
-        throw InterpError("Straight traverse in concave corner cannot be reached by the tool "
-                          "without gouging");
-    throw InterpError("Straight feed in concave corner cannot be reached by the tool without "
-                      "gouging");
-}
-
-// move the end of the held move back to x; error when that reverses or empties it
-void CompEngine::trim_held(Vec2 x)
-{
-    HeldMove *m = queue_.last_plane_move();
-    if (!m)
+    Vec2 p = plane_point(ax_, end), op = prog_, c = cur_;
+    double pz = end[ax_.perp];
+    if (p.y == op.y && p.x == op.x) {
+        hold(kind, line, end, c, pz, Vec2{});
+        cur_perp_ = pz;
         return;
-    Vec2 old_end = plane_point(ax_, m->end);
-    if (m->kind == HeldMove::ARC) {
-        double total = arc_sweep(m->center, m->arc_from, old_end, m->rotation);
-        if (total == 0)
-            total = 2 * M_PI;
-        double begin = arc_sweep(m->center, m->arc_from, m->start, m->rotation);
-        double upto = arc_sweep(m->center, m->arc_from, x, m->rotation);
-        if (std::abs(m->rotation) == 1 && (upto <= begin || upto > total + 1e-9))
-            gouge_error();
-    } else if (dot(x - m->start, m->dir) <= 0) {
-        gouge_error();
     }
-    queue_.move_end(ax_, x);
-    tool_end_ = with_plane_point(ax_, tool_end_, x);
-    path_end_ = x;
+    double theta = std::atan2(c.y - op.y, c.x - op.x);
+    double alpha = std::atan2(p.y - op.y, p.x - op.x);
+    double beta, gamma;
+    if (left_) {
+        if (theta < alpha)
+            theta = theta + 2 * M_PIl;
+        beta = (theta - alpha) - M_PI_2l;
+        gamma = M_PI_2l;
+    } else {
+        if (alpha < theta)
+            alpha = alpha + 2 * M_PIl;
+        beta = (alpha - theta) - M_PI_2l;
+        gamma = -M_PI_2l;
+    }
+    Vec2 e = {p.x + radius_ * std::cos(alpha + gamma), p.y + radius_ * std::sin(alpha + gamma)};
+    Vec2 mid = {op.x + radius_ * std::cos(alpha + gamma), op.y + radius_ * std::sin(alpha + gamma)};
+    const double small = TOLERANCE_CONCAVE_CORNER;
+    HeldMove *prev = queue_.front_move();
+    bool prev_arc = prev && prev->kind == HeldMove::ARC;
+    // a near reversal out of an arc the tool runs outside of (the top of an "h") is concave
+    // nothing held (a synchronised move flushed it): no corner to trim
+    bool concave = prev && (beta < -small || beta > M_PIl + small ||
+                            (beta > M_PIl - small && prev_arc && !tool_inside(prev->rotation)));
+    if (!concave && beta > small) {
+        move_end_and_flush(c);
+        if (kind == HeldMove::FEED)
+            corner_arc(line, mid, end);
+        else
+            hold(HeldMove::TRAVERSE, line, end, mid, cur_perp_, Vec2{});
+        dequeue();
+        set_endpoint(mid);
+    } else if (concave) {
+        move_end_and_flush(concave_line_start(theta, beta, gamma, p));
+    } else {
+        dequeue();
+        set_endpoint(c);
+    }
+    hold(kind, line, end, e, pz, {p.x - op.x, p.y - op.y});
+    prog_ = p;
+    cur_ = e;
+    cur_perp_ = pz;
+}
+
+// Where a held line or arc meets the new line's offset in a concave corner. After a line: back
+// along it by r / tan(half the inside angle). After an arc: where the line's offset crosses the
+// arc's offset circle, found from the center's distance to the programmed line.
+Vec2 CompEngine::concave_line_start(double theta, double beta, double gamma, Vec2 p)
+{
+    HeldMove &prev = *queue_.front_move();
+    Vec2 op = prog_, c = cur_;
+    if (prev.kind != HeldMove::ARC) {
+        double halfcorner = (beta + M_PIl) / 2.0;
+        if (halfcorner == 0.0)
+            throw InterpError("Zero degree inside corner is invalid for cutter compensation");
+        double retreat = radius_ / std::tan(halfcorner);
+        return {c.x + retreat * std::cos(theta + gamma), c.y + retreat * std::sin(theta + gamma)};
+    }
+    Vec2 pe = plane_point(ax_, prev.end);
+    double oldrad = std::hypot(prev.center.y - pe.y, prev.center.x - pe.x);
+    double base_dir = std::atan2(p.y - op.y, p.x - op.x);
+    double normal = prev.rotation > 0 ? base_dir + M_PI_2l : base_dir - M_PI_2l;
+    double phi = std::atan2(prev.center.y - op.y, prev.center.x - op.x);
+    bool inside = tool_inside(prev.rotation);
+    double oldrad_uncomp = inside ? oldrad + radius_ : oldrad - radius_;
+    double d = oldrad_uncomp * std::cos(normal - phi);
+    double l = (inside ? d - radius_ : d + radius_) / oldrad;
+    if (l > 1.0 || l < -1.0)
+        throw InterpError("Arc to straight motion makes a corner the compensated tool can't fit "
+                          "in without gouging");
+    bool plus = inside ? prev.rotation < 0 : prev.rotation > 0;
+    double angle = plus ? std::acos(l) + normal + M_PIl : -std::acos(l) + normal + M_PIl;
+    return {prev.center.x + oldrad * std::cos(angle), prev.center.y + oldrad * std::sin(angle)};
 }
 
 }  // namespace cutcomp

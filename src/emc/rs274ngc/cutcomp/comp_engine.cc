@@ -1,39 +1,28 @@
-// comp_engine.cc: offsetting lines and arcs by the tool radius, corner arcs, concave trimming, entry and exit.
+// comp_engine.cc: cutter comp on and off, entry moves, and the held-move queue's end point moves.
 #include "comp_engine.hh"
 
 #include <cmath>
+#include <cstdio>
 
 #include "comp_orient.hh"
 
 namespace cutcomp {
 
+// entry arcs whose new center direction is this close to a right angle are refused
+static const double TOLERANCE_EQUAL = 0.0001;
+// how far (program units) the recomputed entry arc radii may differ before it is a bug
+static const double ENTRY_ARC_TOLERANCE_INCH = 0.0005;
+static const double ENTRY_ARC_TOLERANCE_MM = 0.005;
+// how much a trimmed arc may sweep beyond its programmed sweep (radians, by program units)
+static const double ARC_TRIM_SLACK_INCH = 0.001;
+static const double ARC_TRIM_SLACK_MM = 0.0254;
+// a trimmed arc's radius may change this much before it is reported as a bug
+static const double ARC_TRIM_RADIUS_TOLERANCE = 0.01;
+
 // nine-axis pose of a canon pose
 static Pose pose_of(const CanonPose &p)
 {
     return {p.x, p.y, p.z, p.a, p.b, p.c, p.u, p.v, p.w};
-}
-
-// a held straight move of the given line: compensated start, start direction, end pose
-static HeldMove held_line(HeldMove::Kind kind, int line, Vec2 start, Vec2 dir, const Pose &end)
-{
-    HeldMove m;
-    m.kind = kind;
-    m.line = line;
-    m.start = start;
-    m.dir = dir;
-    m.end = end;
-    return m;
-}
-
-// a held arc of the given line: center, direction, untrimmed and trimmed start, end pose
-static HeldMove held_arc(int line, Vec2 center, int rotation, Vec2 arc_from, Vec2 start,
-                         const Pose &end)
-{
-    HeldMove m = held_line(HeldMove::ARC, line, start, Vec2{}, end);
-    m.center = center;
-    m.rotation = rotation;
-    m.arc_from = arc_from;
-    return m;
 }
 
 // set up with compensation off
@@ -48,19 +37,20 @@ void CompEngine::start(InterpState &s)
     ax_ = comp_axes(s.plane);
     left_ = s.comp_side == CANON_SIDE_LEFT;
     radius_ = s.comp_radius;
+    orientation_ = s.comp_orientation;
     shift_ = tip_shift(s.plane, s.comp_orientation, radius_);
     active_ = true;
     first_ = true;
-    if (!exit_pending_)
-        tool_end_ = s.current;
-    exit_pending_ = false;
 }
 
 // G40: emit the held path; the next move leaves from the last compensated point
 void CompEngine::stop(InterpState &)
 {
-    flush_all();
-    exit_pending_ = compensating() && !first_;
+    if (compensating() && !first_) {
+        move_end_and_flush(cur_);
+        dequeue();
+        arc_not_allowed_ = true;
+    }
     active_ = false;
     first_ = true;
 }
@@ -71,24 +61,42 @@ void CompEngine::reset()
     queue_.clear();
     active_ = false;
     first_ = true;
-    exit_pending_ = false;
+    arc_not_allowed_ = false;
+    endpoint_valid_ = false;
 }
 
 // emit every held move and deferred call
 void CompEngine::flush_all()
 {
+    dequeue();
+}
+
+// emit the queue; nothing is held afterwards, so no start point is known
+void CompEngine::dequeue()
+{
+    endpoint_valid_ = false;
     queue_.flush(out_, ax_, shift_);
+}
+
+// the next held move starts at x
+void CompEngine::set_endpoint(Vec2 x)
+{
+    endpoint_ = x;
+    endpoint_valid_ = true;
 }
 
 // a straight move: passed through while comp is off, else offset and held
 void CompEngine::straight_move(HeldMove::Kind kind, int line, const CanonPose &p)
 {
+    arc_not_allowed_ = false;
     if (compensating()) {
-        line_move(kind, line, pose_of(p));
+        if (first_)
+            entry_line(kind, line, pose_of(p));
+        else
+            next_line(kind, line, pose_of(p));
         return;
     }
     flush_all();
-    exit_pending_ = false;
     if (kind == HeldMove::TRAVERSE)
         out_.straight_traverse(line, p);
     else
@@ -112,7 +120,7 @@ void CompEngine::arc_feed(int line, double first_end, double second_end, double 
                           double second_axis, int rotation, double axis_end, double a, double b,
                           double c, double u, double v, double w)
 {
-    if (exit_pending_)
+    if (arc_not_allowed_)
         throw InterpError("The move just after exiting cutter compensation mode must be "
                           "straight, not an arc");
     if (!compensating()) {
@@ -127,136 +135,126 @@ void CompEngine::arc_feed(int line, double first_end, double second_end, double 
     end[ax_.perp] = axis_end;
     end[AX_A] = a; end[AX_B] = b; end[AX_C] = c;
     end[AX_U] = u; end[AX_V] = v; end[AX_W] = w;
-    arc_move(line, end, {first_axis, second_axis}, rotation);
+    if (first_)
+        entry_arc(line, end, {first_axis, second_axis}, rotation);
+    else
+        next_arc(line, end, {first_axis, second_axis}, rotation);
 }
 
-// unit normal toward the compensation side of a line of angle theta
-Vec2 CompEngine::line_normal(double theta) const
+// hold a straight move to plane point `to` and perpendicular value `perp`
+void CompEngine::hold(HeldMove::Kind kind, int line, const Pose &end, Vec2 to, double perp, Vec2 dir)
 {
-    return polar(left_ ? theta + M_PI_2 : theta - M_PI_2);
-}
-
-// -1 when the tool runs inside the arc (left of a CCW arc, right of a CW arc), else +1
-double CompEngine::arc_side(int rotation) const
-{
-    return (left_ == (rotation > 0)) ? -1.0 : 1.0;
-}
-
-// remember the end of a newly held move
-void CompEngine::hold(const HeldMove &m, Vec2 end_dir, double end_kappa, const PathShape &end_shape)
-{
-    end_kappa_ = end_kappa;
+    HeldMove m;
+    m.kind = kind;
+    m.line = line;
+    m.end = with_plane_point(ax_, end, to);
+    m.end[ax_.perp] = perp;
+    m.dir = dir;
     queue_.push_move(m);
-    path_end_ = plane_point(ax_, m.end);
-    tool_end_ = m.end;
-    end_dir_ = end_dir;
-    end_shape_ = end_shape;
-    first_ = false;
 }
 
-// straight move with compensation on
-void CompEngine::line_move(HeldMove::Kind kind, int line, const Pose &end)
-{
-    if (first_) {
-        entry_line(kind, line, end);
-        return;
-    }
-    Vec2 s2 = plane_point(ax_, s_.current), e2 = plane_point(ax_, end);
-    if (distance(s2, e2) < 1e-12) {
-        HeldMove m = held_line(kind, line, path_end_, Vec2{}, with_plane_point(ax_, end, path_end_));
-        m.in_plane = false;
-        queue_.push_move(m);
-        tool_end_ = m.end;
-        return;
-    }
-    double theta = angle_of(e2 - s2);
-    Vec2 n = line_normal(theta);
-    PathShape shape = line_shape(s2 + radius_ * n, polar(theta));
-    Joint j;
-    j.dir = shape.d;
-    j.start = shape.p;
-    j.end = e2 + radius_ * n;
-    j.shape = shape;
-    j.corner_point = s2;
-    hold(held_line(kind, line, corner(j), shape.d, with_plane_point(ax_, end, j.end)), shape.d, 0,
-         shape);
-}
-
-// entry line: ends at the programmed end offset perpendicular to the move
+// entry line: to the programmed end moved a radius sideways, perpendicular to the move
 void CompEngine::entry_line(HeldMove::Kind kind, int line, const Pose &end)
 {
-    Vec2 s2 = plane_point(ax_, tool_end_), e2 = plane_point(ax_, end);
-    if (distance(s2, e2) <= radius_) {
-        if (distance(s2, e2) < 1e-12) {
-            flush_all();
-            kind == HeldMove::TRAVERSE ? out_.straight_traverse(line, to_canon_pose(end))
-                                       : out_.straight_feed(line, to_canon_pose(end));
-            tool_end_ = end;
-            return;
-        }
+    Vec2 c = plane_point(ax_, s_.current), p = plane_point(ax_, end);
+    if (std::hypot(p.x - c.x, p.y - c.y) <= radius_)
         throw InterpError("Length of cutter compensation entry move is not greater than the "
                           "tool radius");
-    }
-    double theta = angle_of(e2 - s2);
-    Vec2 e_off = e2 + radius_ * line_normal(theta);
-    PathShape shape = line_shape(e_off, polar(theta));
-    HeldMove m = held_line(kind, line, s2, polar(angle_of(e_off - s2)),
-                           with_plane_point(ax_, end, e_off));
-    flush_all();
-    hold(m, polar(theta), 0, shape);
+    double alpha = std::atan2(p.y - c.y, p.x - c.x) + (left_ ? M_PIl / 2. : -M_PIl / 2.);
+    Vec2 e = {p.x + radius_ * std::cos(alpha), p.y + radius_ * std::sin(alpha)};
+    set_endpoint(c);
+    hold(kind, line, end, e, end[ax_.perp], {std::cos(alpha), std::sin(alpha)});
+    first_ = false;
+    prog_ = p;
+    cur_ = e;
+    cur_perp_ = end[ax_.perp];
 }
 
-// arc move with compensation on: same center, radius grown or shrunk by the tool radius
-void CompEngine::arc_move(int line, const Pose &end, Vec2 center, int rotation)
-{
-    if (first_) {
-        entry_arc(line, end, center, rotation);
-        return;
-    }
-    Vec2 s2 = plane_point(ax_, s_.current), e2 = plane_point(ax_, end);
-    double k = arc_side(rotation);
-    double r0 = distance(s2, center);
-    if (k < 0 && r0 <= radius_)
-        throw InterpError("Tool radius not less than arc radius with comp");
-    double r_end = distance(e2, center) + k * radius_;
-    PathShape shape = arc_shape(center, k > 0 ? r_end : r0 + k * radius_);
-    Vec2 start = center + (r0 + k * radius_) * polar(angle_of(s2 - center));
-    Vec2 e_off = center + r_end * polar(angle_of(e2 - center));
-    double kappa = (rotation > 0 ? 1.0 : -1.0) / r0;
-    Joint j;
-    j.dir = arc_tangent(center, s2, rotation);
-    j.kappa = kappa;
-    j.start = start;
-    j.end = e_off;
-    j.shape = shape;
-    j.corner_point = s2;
-    j.rotation = rotation;
-    Vec2 trimmed_start = corner(j);
-    HeldMove m = held_arc(line, center, rotation, start, trimmed_start,
-                          with_plane_point(ax_, end, e_off));
-    hold(m, arc_tangent(center, e2, rotation), kappa, arc_shape(center, r_end));
-}
-
-// entry arc: the end is offset radially, the center moves along the end radius
+// entry arc: the end moves a radius along the end radius and the center slides along that
+// radius until the arc passes through the current point
 void CompEngine::entry_arc(int line, const Pose &end, Vec2 center, int rotation)
 {
-    Vec2 s2 = plane_point(ax_, tool_end_), e2 = plane_point(ax_, end);
-    if (distance(s2, e2) <= radius_)
+    Vec2 c = plane_point(ax_, s_.current), p = plane_point(ax_, end);
+    if (std::hypot(p.x - c.x, p.y - c.y) <= radius_)
         throw InterpError("Radius of cutter compensation entry arc is not greater than the tool "
                           "radius");
-    double k = arc_side(rotation);
-    if (k < 0 && distance(e2, center) <= radius_)
+    bool inside = tool_inside(rotation);
+    if (inside && std::hypot(center.x - c.x, center.y - c.y) <= radius_)
         throw InterpError("Tool radius not less than arc radius with comp");
-    double r_end = distance(e2, center);
-    Vec2 e_off = center + (r_end + k * radius_) * polar(angle_of(e2 - center));
-    Vec2 c2;
-    if (!entry_arc_center(s2, center, e2, e_off, c2))
+    double gamma = inside ? std::atan2(center.y - p.y, center.x - p.x)
+                          : std::atan2(p.y - center.y, p.x - center.x);
+    Vec2 e = {p.x + radius_ * std::cos(gamma), p.y + radius_ * std::sin(gamma)};
+    double b_len = std::hypot(c.y - e.y, c.x - e.x) / 2.0;
+    double ab_ang = std::atan2(center.y - e.y, center.x - e.x);
+    double a_ang = std::atan2(c.y - e.y, c.x - e.x) - ab_ang;
+    if (std::fabs(std::cos(a_ang)) < TOLERANCE_EQUAL)
+        throw InterpError("Tool radius not less than arc radius with comp");
+    double c_len = b_len / std::cos(a_ang);
+    Vec2 nc = {e.x + c_len * std::cos(ab_ang), e.y + c_len * std::sin(ab_ang)};
+    double tol = s_.units == CANON_UNITS_INCHES ? ENTRY_ARC_TOLERANCE_INCH : ENTRY_ARC_TOLERANCE_MM;
+    if (std::fabs(std::hypot(nc.x - e.x, nc.y - e.y) - std::hypot(nc.x - c.x, nc.y - c.y)) > tol)
+        throw InterpError("Bug in tool radius comp");
+    // a lathe tool's controlled point jumps to the tip here: a zero-length move first, so the
+    // arc starts where its shifted start really is
+    if (orientation_ != 0 && orientation_ != 9) {
+        hold(HeldMove::FEED, line, end, c, s_.current[ax_.perp], Vec2{});
+        set_endpoint(c);
+    }
+    HeldMove m;
+    m.kind = HeldMove::ARC;
+    m.line = line;
+    m.end = with_plane_point(ax_, end, e);
+    m.center = nc;
+    m.rotation = rotation;
+    m.original_sweep = find_turn(c, nc, rotation, e);
+    queue_.push_move(m);
+    first_ = false;
+    prog_ = p;
+    cur_ = e;
+    cur_perp_ = end[ax_.perp];
+}
+
+// a held arc may be trimmed, never swept past its start or onto another radius
+void CompEngine::check_arc_end(const HeldMove &m, Vec2 x) const
+{
+    Vec2 end = plane_point(ax_, m.end);
+    double r1 = std::hypot(end.x - m.center.x, end.y - m.center.y);
+    double r2 = std::hypot(x.x - m.center.x, x.y - m.center.y);
+    double l1 = m.original_sweep;
+    double l2 = find_turn(endpoint_, m.center, m.rotation, x);
+    double slack = s_.units == CANON_UNITS_MM ? ARC_TRIM_SLACK_MM : ARC_TRIM_SLACK_INCH;
+    if (l1 != 0 && endpoint_valid_ && std::fabs(l2) > std::fabs(l1) + slack)
         throw InterpError("Arc move in concave corner cannot be reached by the tool without "
                           "gouging");
-    HeldMove m = held_arc(line, c2, rotation, s2, s2, with_plane_point(ax_, end, e_off));
-    flush_all();
-    hold(m, arc_tangent(center, e2, rotation), (rotation > 0 ? 1.0 : -1.0) / r_end,
-         arc_shape(c2, distance(e_off, c2)));
+    if (std::fabs(r1 - r2) > ARC_TRIM_RADIUS_TOLERANCE) {
+        char buf[200];
+        snprintf(buf, sizeof buf, "BUG: cutter compensation has generated an invalid arc with "
+                 "mismatched radii r1 %f r2 %f\n", r1, r2);
+        throw InterpError(buf);
+    }
+}
+
+// the concave-corner trim: every held move now ends at x; a straight one must not reverse
+void CompEngine::move_end_and_flush(Vec2 x)
+{
+    if (!queue_.holding())
+        return;
+    queue_.for_each_move([&](HeldMove &m) {
+        if (m.kind == HeldMove::ARC) {
+            check_arc_end(m, x);
+        } else {
+            double dot = m.dir.x * (x.x - endpoint_.x) + m.dir.y * (x.y - endpoint_.y);
+            if (endpoint_valid_ && dot < 0)
+                throw InterpError(m.kind == HeldMove::TRAVERSE
+                    ? "Straight traverse in concave corner cannot be reached by the tool without "
+                      "gouging"
+                    : "Straight feed in concave corner cannot be reached by the tool without "
+                      "gouging");
+        }
+        m.end = with_plane_point(ax_, m.end, x);
+    });
+    dequeue();
+    set_endpoint(x);
 }
 
 }  // namespace cutcomp

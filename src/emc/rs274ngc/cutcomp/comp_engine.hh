@@ -7,7 +7,14 @@
 
 namespace cutcomp {
 
-// Receives programmed moves, holds each until the next is known, and emits the compensated path.
+// corners turning less than this (radians) either way are tangent: no arc, no trim
+constexpr double TOLERANCE_CONCAVE_CORNER = 0.05;
+
+// Receives programmed moves and emits LinuxCNC's compensated path: the entry move ends a tool
+// radius beside the programmed end, perpendicular to the entry; every later move is offset by the
+// radius; a convex corner gets an arc of the tool radius about the programmed corner; a concave
+// corner moves the end of the held move back to where the two offset paths meet. Each move is
+// held until the next one shows which kind of corner follows it.
 class CompEngine : public CompFilter, public Engine {
 public:
     // compensate for interpreter state s, writing to out
@@ -33,57 +40,51 @@ protected:
 private:
     // true when moves must be compensated
     bool compensating() const { return active_ && radius_ > 0; }
+    // true when the tool runs inside an arc of the given direction (left of CCW, right of CW)
+    bool tool_inside(int rotation) const { return left_ == (rotation > 0); }
     // a straight move, compensated or passed through
     void straight_move(HeldMove::Kind kind, int line, const CanonPose &p);
-    // a straight move while compensating
-    void line_move(HeldMove::Kind kind, int line, const Pose &end);
-    // an arc while compensating
-    void arc_move(int line, const Pose &end, Vec2 center, int rotation);
-    // first compensated straight move (entry)
+    // first compensated straight move: ends a radius beside its end, perpendicular to it
     void entry_line(HeldMove::Kind kind, int line, const Pose &end);
-    // first compensated arc (entry)
+    // first compensated arc: ends a radius beside its end, center moved so it starts here
     void entry_arc(int line, const Pose &end, Vec2 center, int rotation);
-    // The start of a new compensated move as seen by the corner logic.
-    struct Joint {
-        Vec2 dir;             // programmed start direction
-        double kappa = 0;     // programmed start curvature (+ counterclockwise)
-        Vec2 start, end;      // untrimmed offset start and offset end
-        PathShape shape;      // offset path
-        Vec2 corner_point;    // programmed corner
-        int rotation = 0;     // arc direction, 0 for lines
-    };
-    // join the held path to a new move; returns where the new move really starts
-    Vec2 corner(const Joint &j);
-    // the concave-corner point: where the held offset path meets the new one
-    Vec2 concave_point(const Joint &j);
-    // true when x lies on the new move's offset path between its start and end
-    bool on_new(const Joint &j, Vec2 x) const;
-    // true when x lies on the held move between its start and its end
-    bool on_held(const HeldMove &m, Vec2 x) const;
-    // trim the held move to the concave-corner point x, checking it is still reachable
-    void trim_held(Vec2 x);
-    // throw the concave-corner gouging error for the held move
-    [[noreturn]] void gouge_error();
-    // hold a move and remember its end (direction, curvature, offset shape) as the new path end
-    void hold(const HeldMove &m, Vec2 end_dir, double end_kappa, const PathShape &end_shape);
-    // +1 or -1: the offset side of an arc (-1 = toward the center)
-    double arc_side(int rotation) const;
-    // offset normal of a straight move of angle theta
-    Vec2 line_normal(double theta) const;
+    // a later straight move: corner with the held move, then held itself
+    void next_line(HeldMove::Kind kind, int line, const Pose &end);
+    // a later arc: corner with the held move, then held itself
+    void next_arc(int line, const Pose &end, Vec2 center, int rotation);
+    // concave corner from a held line or arc into a new line to p: the new start point
+    Vec2 concave_line_start(double theta, double beta, double gamma, Vec2 p);
+    // concave corner from a held line into a new arc (end radius arc_radius, offset radius r2)
+    Vec2 line_arc_corner(double theta, Vec2 center, double arc_radius, double r2, int rotation);
+    // concave corner from a held arc into a new arc of compensated radius r2 about center
+    Vec2 arc_arc_corner(Vec2 center, double r2, int rotation);
+    // the convex corner arc about the programmed corner, ending at `to`
+    void corner_arc(int line, Vec2 to, const Pose &end);
+    // move the end of every held move to x (checking none reverses), emit them, x starts the next
+    void move_end_and_flush(Vec2 x);
+    // check that moving the held arc m's end to x keeps its radius and direction
+    void check_arc_end(const HeldMove &m, Vec2 x) const;
+    // emit everything held; the next move's start is unknown to the reversal checks
+    void dequeue();
+    // the start of the next held move (for the reversal checks)
+    void set_endpoint(Vec2 x);
+    // hold a compensated move
+    void hold(HeldMove::Kind kind, int line, const Pose &end, Vec2 to, double perp, Vec2 dir);
 
     InterpState &s_;
     CompAxes ax_;
-    bool active_ = false;       // G41/G42 in effect
-    bool left_ = true;          // G41
+    bool active_ = false;          // G41/G42 in effect
+    bool left_ = true;             // G41
+    int orientation_ = 0;          // lathe tool orientation
     double radius_ = 0;
-    Vec2 shift_;                // lathe tool-tip shift of the emitted path
-    bool first_ = true;         // next compensated move is the entry move
-    bool exit_pending_ = false; // G40 done, the exit move has not come yet
-    Vec2 path_end_;             // compensated end of the held path
-    Pose tool_end_{};           // full pose at the end of the held path
-    Vec2 end_dir_;              // programmed direction at the end of the held path
-    double end_kappa_ = 0;      // programmed curvature there (+ counterclockwise)
-    PathShape end_shape_;       // offset shape of the last plane move
+    Vec2 shift_;                   // lathe tool-tip shift of the emitted path
+    bool first_ = true;            // next compensated move is the entry move
+    bool arc_not_allowed_ = false; // G40 done, the exit move has not come yet
+    Vec2 prog_;                    // programmed plane point at the end of the held path
+    Vec2 cur_;                     // compensated plane point there
+    double cur_perp_ = 0;          // perpendicular axis there
+    Vec2 endpoint_;                // start of the held move
+    bool endpoint_valid_ = false;
 };
 
 }  // namespace cutcomp

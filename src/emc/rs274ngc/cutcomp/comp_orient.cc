@@ -14,7 +14,7 @@ Vec2 tip_shift(CanonPlane plane, int orientation, double radius)
     };
     if (plane != CANON_PLANE_XZ || orientation < 0 || orientation > 9)
         return {0, 0};
-    return radius * tip[orientation];
+    return {radius * tip[orientation].x, radius * tip[orientation].y};
 }
 
 }  // namespace cutcomp

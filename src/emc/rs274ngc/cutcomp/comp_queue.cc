@@ -45,33 +45,23 @@ void CompQueue::push_move(const HeldMove &m)
     e.is_move = true;
     e.move = m;
     q_.push_back(std::move(e));
-    moves_++;
 }
 
-// newest move that travels in the plane
-HeldMove *CompQueue::last_plane_move()
+// the first queued entry is always a move: calls are only queued behind one
+HeldMove *CompQueue::front_move()
 {
-    for (auto it = q_.rbegin(); it != q_.rend(); ++it)
-        if (it->is_move && it->move.in_plane)
-            return &it->move;
+    for (auto &e : q_)
+        if (e.is_move)
+            return &e.move;
     return nullptr;
 }
 
-// set the end of the last plane move and carry the perpendicular-only moves after it along
-void CompQueue::move_end(const CompAxes &ax, Vec2 v)
+// visit the held moves in order
+void CompQueue::for_each_move(const std::function<void(HeldMove &)> &f)
 {
-    bool after = false;
-    for (auto &e : q_) {
-        if (!e.is_move)
-            continue;
-        if (&e.move == last_plane_move())
-            after = true;
-        if (after) {
-            e.move.end = with_plane_point(ax, e.move.end, v);
-            if (!e.move.in_plane)
-                e.move.start = v;
-        }
-    }
+    for (auto &e : q_)
+        if (e.is_move)
+            f(e.move);
 }
 
 // replay the queue
@@ -80,20 +70,11 @@ void CompQueue::flush(Canon &out, const CompAxes &ax, Vec2 shift)
     while (!q_.empty()) {
         Entry e = std::move(q_.front());
         q_.pop_front();
-        if (e.is_move) {
-            moves_--;
+        if (e.is_move)
             emit_move(out, ax, e.move, shift);
-        } else {
+        else
             e.call(out);
-        }
     }
-}
-
-// forget everything held
-void CompQueue::clear()
-{
-    q_.clear();
-    moves_ = 0;
 }
 
 // write one move, applying the lathe tool-tip shift to end point and center

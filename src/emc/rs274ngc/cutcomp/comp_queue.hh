@@ -28,32 +28,30 @@ Pose with_plane_point(const CompAxes &ax, Pose p, Vec2 v);
 struct HeldMove {
     enum Kind { TRAVERSE, FEED, ARC } kind = FEED;
     int line = 0;
-    Pose end{};          // full end pose (plane point compensated, before the tool-tip shift)
-    Vec2 start;          // compensated plane start point
-    Vec2 dir;            // line: unit direction it must keep
-    Vec2 arc_from;       // arc: the untrimmed offset start point
-    Vec2 center;         // arc center
-    int rotation = 0;    // arc turns, sign = direction
-    bool in_plane = true;  // false for moves along the perpendicular axis only
+    Pose end{};                 // full end pose (plane point compensated, before the tool-tip shift)
+    Vec2 dir;                   // straight: the programmed plane motion, for the reversal check
+    Vec2 center;                // arc center
+    int rotation = 0;           // arc turns, sign = direction
+    double original_sweep = 0;  // arc: programmed sweep (radians), 0 for corner arcs
 };
 
 // FIFO of held moves and deferred canon calls, emitted in order.
 class CompQueue {
 public:
-    // true while at least one move is held
-    bool holding() const { return moves_ > 0; }
+    // true while anything is queued (calls are only queued behind a move)
+    bool holding() const { return !q_.empty(); }
     // defer a canon call behind the held moves
     void push_call(std::function<void(Canon &)> call);
     // hold a move
     void push_move(const HeldMove &m);
-    // the last held move that changes the plane point, nullptr if none
-    HeldMove *last_plane_move();
-    // move the end of the last plane move (and the plane moves after it) to v
-    void move_end(const CompAxes &ax, Vec2 v);
+    // the oldest held move, nullptr if none
+    HeldMove *front_move();
+    // call f for every held move, oldest first
+    void for_each_move(const std::function<void(HeldMove &)> &f);
     // emit everything in order through `out`, shifting plane points by `shift`
     void flush(Canon &out, const CompAxes &ax, Vec2 shift);
     // drop everything
-    void clear();
+    void clear() { q_.clear(); }
 
 private:
     // one queue slot: a move or a call
@@ -63,7 +61,6 @@ private:
         std::function<void(Canon &)> call;
     };
     std::deque<Entry> q_;
-    int moves_ = 0;
 };
 
 // emit one compensated move through `out` with its plane points shifted by `shift`

@@ -39,7 +39,7 @@ struct Frame {
     // an element of the (z, x) plane in the cycle frame
     Elem to(const Elem &e) const
     {
-        return Elem{e.arc, to(e.a), to(e.b), to(e.c), e.ccw != flips(), e.id, e.r};
+        return Elem{e.arc, to(e.a), to(e.b), to(e.c), e.ccw != flips(), e.id, e.r, e.r_end};
     }
 };
 

@@ -16,6 +16,10 @@ constexpr double LEN_EPS = 1e-10;
 constexpr double JOIN_MISS = 0.002;
 // turns smaller than this (sine of the angle) count as tangent: no corner arc
 constexpr double TANGENT_SIN = 1e-3;
+// shortest piece an arc is split into where it turns in v
+constexpr double SPLIT_MIN = 1e-6;
+// id of the arcs inserted around convex corners (they end exactly where the next element starts)
+constexpr int CORNER_ID = -2;
 
 // cross product of two direction vectors
 double cross(Pt p, Pt q)
@@ -75,6 +79,13 @@ Pt unit_from(Pt c, Pt p)
     return r > 0 ? Pt{(p.u - c.u) / r, (p.v - c.v) / r} : Pt{1, 0};
 }
 
+// the circle a following arc f is joined on: its end radius (LinuxCNC joins a programmed arc
+// whose ends lie at slightly different radii to the element before it on the end's circle)
+double join_radius(const Elem &f)
+{
+    return f.r_end > 0 ? f.r_end : dist(f.c, f.b);
+}
+
 // intersections of line e with line f
 void line_line(const Elem &e, const Elem &f, std::vector<std::pair<double, double>> &out)
 {
@@ -91,7 +102,7 @@ void line_arc(const Elem &e, const Elem &f, bool swap, double miss,
               std::vector<std::pair<double, double>> &out)
 {
     Pt d{e.b.u - e.a.u, e.b.v - e.a.v}, w{e.a.u - f.c.u, e.a.v - f.c.v};
-    double r = arc_radius(f);
+    double r = swap ? arc_radius(f) : join_radius(f);
     double qa = d.u * d.u + d.v * d.v, qb = 2 * (d.u * w.u + d.v * w.v);
     double qc = w.u * w.u + w.v * w.v - r * r;
     if (qa <= 0) return;
@@ -102,12 +113,15 @@ void line_arc(const Elem &e, const Elem &f, bool swap, double miss,
     double root = std::sqrt(std::fmax(0.0, disc));
     int n = root > 0 ? 2 : 1;
     double reach = miss / std::sqrt(qa);  // how far past its ends the line may be met
+    // a next element (line when swapped, else the arc) may be met before its start, as when a
+    // line and an arc that were tangent cross twice after offsetting: the first crossing counts
+    double back = miss > 0 ? 1.0 : 0.0;
     for (int k = 0; k < n; k++) {
         double t = (-qb + (k == 0 ? -root : root)) / (2 * qa);
-        if (t < -reach - T_EPS || t > 1 + reach + T_EPS) continue;
+        if (t < -(swap ? back : reach) - T_EPS || t > 1 + reach + T_EPS) continue;
         double s = arc_param(f, Pt{e.a.u + t * d.u, e.a.v + t * d.v});
         double arc_reach = miss / std::fmax(elem_length(f), 1e-12);
-        if (s < -arc_reach - T_EPS || s > 1 + arc_reach + T_EPS) continue;
+        if (s < -(swap ? arc_reach : back) - T_EPS || s > 1 + arc_reach + T_EPS) continue;
         if (swap) out.emplace_back(s, t);
         else out.emplace_back(t, s);
     }
@@ -116,7 +130,7 @@ void line_arc(const Elem &e, const Elem &f, bool swap, double miss,
 // intersections of arc e with arc f
 void arc_arc(const Elem &e, const Elem &f, double miss, std::vector<std::pair<double, double>> &out)
 {
-    double r1 = arc_radius(e), r2 = arc_radius(f), d = dist(e.c, f.c);
+    double r1 = arc_radius(e), r2 = join_radius(f), d = dist(e.c, f.c);
     double tol = std::fmax(1e-9, miss);
     if (d < 1e-12 || d > r1 + r2 + tol || d < std::fabs(r1 - r2) - tol) return;
     double a = (r1 * r1 - r2 * r2 + d * d) / (2 * d);
@@ -149,6 +163,7 @@ bool offset_elem(const Elem &e, double d, Elem &o)
     double r = arc_radius(e) + (e.ccw ? -d : d);
     if (r <= 1e-9) return false;
     o.r = r;
+    o.r_end = std::fmax(1e-9, dist(e.c, e.b) + (e.ccw ? -d : d));
     o.a = add(e.c, unit_from(e.c, e.a), r);
     o.b = add(e.c, unit_from(e.c, e.b), r);
     return true;
@@ -161,6 +176,7 @@ bool corner_arc(Pt p, Pt t_in, Pt t_out, double d, Elem &arc)
     if (dot > 0 && c > -TANGENT_SIN) return false;
     if (dot <= 0 && c > 1e-9) return false;
     arc.arc = true;
+    arc.id = CORNER_ID;
     arc.c = p;
     arc.ccw = false;
     arc.r = d;
@@ -189,6 +205,7 @@ bool first_crossing(const std::vector<Elem> &raw, size_t i, double t0, double &t
 {
     bool found = false;
     for (size_t k = i + 1; k < raw.size(); k++) {
+        if (k == i + 1 && raw[i].id == CORNER_ID) continue;
         for (auto &ts : elem_intersections(raw[i], raw[k], k == i + 1 ? JOIN_MISS : 0)) {
             if (ts.first <= t0 + T_EPS) continue;
             bool joint = ts.first >= 1 - T_EPS && ts.second <= T_EPS;
@@ -275,10 +292,12 @@ std::vector<Elem> split_monotonic(const std::vector<Elem> &path)
             continue;
         }
         double r = arc_radius(e), prev = 0;
+        // an arc that starts or ends (within SPLIT_MIN) at its top or bottom is not cut there
+        double margin = SPLIT_MIN / std::fmax(elem_length(e), SPLIT_MIN);
         std::vector<double> cuts;
         for (double sign : {1.0, -1.0}) {
             double t = arc_param(e, Pt{e.c.u, e.c.v + sign * r});
-            if (t > T_EPS && t < 1 - T_EPS) cuts.push_back(t);
+            if (t > margin && t < 1 - margin) cuts.push_back(t);
         }
         if (cuts.size() == 2 && cuts[0] > cuts[1]) std::swap(cuts[0], cuts[1]);
         for (double t : cuts) {
@@ -309,7 +328,9 @@ bool level_param(const Elem &e, double v, double &t)
 
 std::vector<Elem> offset_envelope(const std::vector<Elem> &path, double d)
 {
-    std::vector<Elem> raw = d == 0 ? path : raw_offset(path, d);
+    // no allowance: the programmed elements as they are, joined at their programmed end points
+    if (d == 0) return path;
+    std::vector<Elem> raw = raw_offset(path, d);
     std::vector<Elem> out;
     size_t i = 0;
     double t0 = 0;
@@ -323,7 +344,9 @@ std::vector<Elem> offset_envelope(const std::vector<Elem> &path, double d)
         if (joined) part.a = join;
         joined = jump;
         if (jump) {
-            Pt pi = line_point(raw[i], t), pj = line_point(raw[j], s);
+            // an arc met before its start has no point of its own there: the crossing on raw[i]
+            Pt pi = line_point(raw[i], t);
+            Pt pj = raw[j].arc && (s < 0 || s > 1) ? pi : line_point(raw[j], s);
             join = !raw[i].arc ? pi : !raw[j].arc ? pj : Pt{(pi.u + pj.u) / 2, (pi.v + pj.v) / 2};
             part.b = join;
         }

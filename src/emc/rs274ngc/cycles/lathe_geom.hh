@@ -21,6 +21,8 @@ struct Elem {
     bool ccw = false;
     int id = -1;
     double r = 0;   // arc radius (0: the distance from c to a)
+    double r_end = 0;  // radius at the end (0: the distance from c to b); an arc that follows
+                       // another element is joined to it on this circle
 };
 
 // distance between two points

@@ -6,24 +6,28 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "mb2hal_log.h"
 #include "mb_cfgval.h"
 
 #define HAL_NAME_MAX 47
 
-/* Function codes mb2hal knows, their names and the most elements one request may carry. */
+/* Function codes mb2hal knows: name, LinuxCNC's number for it (shown in the INIT_DEBUG log),
+ * the most elements one run may carry (5 and 6 write element by element) and the VERSION needed. */
 static const struct {
     int code;
     const char *name;
+    int log_number;
     int max_elements;
+    int min_version;
 } codes[] = {
-    {1, "fnct_01_read_coils", 2000},
-    {2, "fnct_02_read_discrete_inputs", 2000},
-    {3, "fnct_03_read_holding_registers", 125},
-    {4, "fnct_04_read_input_registers", 125},
-    {5, "fnct_05_write_single_coil", 1},
-    {6, "fnct_06_write_single_register", 1},
-    {15, "fnct_15_write_multiple_coils", 1968},
-    {16, "fnct_16_write_multiple_registers", 123},
+    {1, "fnct_01_read_coils", 7, 2000, 11},
+    {2, "fnct_02_read_discrete_inputs", 1, 2000, 10},
+    {3, "fnct_03_read_holding_registers", 2, 125, 10},
+    {4, "fnct_04_read_input_registers", 3, 125, 10},
+    {5, "fnct_05_write_single_coil", 8, 65536, 11},
+    {6, "fnct_06_write_single_register", 4, 65536, 10},
+    {15, "fnct_15_write_multiple_coils", 5, 1968, 10},
+    {16, "fnct_16_write_multiple_registers", 6, 123, 10},
 };
 #define NCODES ((int)(sizeof(codes) / sizeof(codes[0])))
 
@@ -34,6 +38,15 @@ const char *mb2hal_code_name(int code)
         if (codes[i].code == code)
             return codes[i].name;
     return "?";
+}
+
+/* LinuxCNC's number for a function code, as its INIT_DEBUG log shows it. */
+static int code_log_number(int code)
+{
+    for (int i = 0; i < NCODES; i++)
+        if (codes[i].code == code)
+            return codes[i].log_number;
+    return 0;
 }
 
 /* Non-zero when the function code reads from the device. */
@@ -120,7 +133,7 @@ static void parse_link(mb_sec_t *s, mb_tx_cfg_t *tx, int first)
 }
 
 /* Reads MB_TX_CODE. */
-static int parse_code(mb_sec_t *s, mb_tx_cfg_t *tx)
+static int parse_code(mb2hal_cfg_t *cfg, mb_sec_t *s, mb_tx_cfg_t *tx)
 {
     const char *names[NCODES + 1];
     int idx;
@@ -133,6 +146,11 @@ static int parse_code(mb_sec_t *s, mb_tx_cfg_t *tx)
     if (r != 1)
         return -1;
     tx->code = codes[idx].code;
+    if (cfg->version < codes[idx].min_version) {
+        mb_cfg_error(s, mb_key_line(s, "MB_TX_CODE"), "MB_TX_CODE", "%s needs VERSION=1.1 in [MB2HAL_INIT]",
+                     codes[idx].name);
+        return -1;
+    }
     return codes[idx].max_elements;
 }
 
@@ -199,13 +217,26 @@ static void parse_elements(mb2hal_cfg_t *cfg, mb_sec_t *s, mb_tx_cfg_t *tx, int 
                      "FIRST_ELEMENT + %d elements passes address 65535", tx->nelements);
 }
 
+/* Longest suffix the pins of an element get (".bit-inv", ".float", ...) for tx's code and VERSION. */
+static size_t pin_suffix_len(const mb2hal_cfg_t *cfg, const mb_tx_cfg_t *tx)
+{
+    int bits = mb2hal_code_is_bits(tx->code), read = mb2hal_code_is_read(tx->code);
+    if (cfg->version < 11)
+        return !bits && read ? strlen(".float") : 0;
+    if (bits)
+        return read ? strlen(".bit-inv") : strlen(".bit");
+    return strlen(".float");
+}
+
 /* Checks that the longest pin name of tx fits in a HAL name. */
 static void check_name_lengths(mb2hal_cfg_t *cfg, mb_sec_t *s, mb_tx_cfg_t *tx)
 {
-    size_t longest = strlen("num_errors");
-    for (int i = 0; tx->pin_names && i < tx->nelements; i++)
-        if (strlen(tx->pin_names[i]) + 6 > longest)
-            longest = strlen(tx->pin_names[i]) + 6;
+    size_t longest = strlen("num_errors"), suffix = pin_suffix_len(cfg, tx);
+    for (int i = 0; i < tx->nelements; i++) {
+        size_t len = (tx->pin_names ? strlen(tx->pin_names[i]) : 2) + suffix;
+        if (len > longest)
+            longest = len;
+    }
     size_t total = strlen(cfg->module_name) + 1 + strlen(tx->tx_name) + 1 + longest;
     if (total > HAL_NAME_MAX)
         mb_cfg_error(s, mb_key_line(s, "HAL_TX_NAME"), "HAL_TX_NAME",
@@ -222,7 +253,7 @@ static void parse_tx(mb2hal_cfg_t *cfg, mb_sec_t *s, mb_tx_cfg_t *tx, int num)
         return;
     }
     parse_link(s, tx, num == 0);
-    int max = parse_code(s, tx);
+    int max = parse_code(cfg, s, tx);
     if (mb_get_int(s, "FIRST_ELEMENT", 0, 65535, &tx->first_element) == 0)
         mb_cfg_missing(s, "FIRST_ELEMENT");
     parse_elements(cfg, s, tx, max);
@@ -238,6 +269,7 @@ static void parse_tx(mb2hal_cfg_t *cfg, mb_sec_t *s, mb_tx_cfg_t *tx, int num)
     mb_get_double(s, "MAX_UPDATE_RATE", 0.0, 1e6, &tx->max_update_rate);
     tx->debug = cfg->init_debug;
     mb_get_int(s, "DEBUG", 0, 5, &tx->debug);
+    tx->version = cfg->version;
 }
 
 /* Sets tx to the defaults, or to what the previous transaction passes on. */
@@ -258,6 +290,61 @@ static void init_tx(mb_tx_cfg_t *tx, const mb_tx_cfg_t *prev, int num)
     tx->link.serial_parity = 'N';
     tx->resp_timeout_ms = 500;
     tx->byte_timeout_ms = 500;
+}
+
+/* Logs [MB2HAL_INIT] the way LinuxCNC's INIT_DEBUG=3 shows it. */
+static void log_init(const mb2hal_cfg_t *cfg)
+{
+    const char *w = "parse_common_section";
+    int d = cfg->init_debug;
+    mb_log(d, MB_LOG_DEBUG, w, "[MB2HAL_INIT] [INIT_DEBUG] [%d]", d);
+    mb_log(d, MB_LOG_DEBUG, w, "[MB2HAL_INIT] [VERSION] [%d]", 1000 * (cfg->version / 10) + cfg->version % 10);
+    mb_log(d, MB_LOG_DEBUG, w, "[MB2HAL_INIT] [HAL_MODULE_NAME] [%s]", cfg->module_name);
+    mb_log(d, MB_LOG_DEBUG, w, "[MB2HAL_INIT] [SLOWDOWN] [%0.3f]", cfg->slowdown);
+    mb_log(d, MB_LOG_DEBUG, w, "[MB2HAL_INIT] [TOTAL_TRANSACTIONS] [%d]", cfg->ntx);
+}
+
+/* Logs the link keys of a transaction (serial or TCP subsection). */
+static void log_link(int d, const mb_tx_cfg_t *tx)
+{
+    static const char *const parities[] = {['N'] = "none", ['E'] = "even", ['O'] = "odd"};
+    const mb_link_cfg_t *l = &tx->link;
+    int serial = l->type == MB_LINK_SERIAL;
+    mb_log(d, MB_LOG_DEBUG, "parse_transaction_section", "[%s] [LINK_TYPE] [%s] [%d]", tx->section,
+           serial ? "serial" : "tcp", serial ? MB_LOG_LINK_RTU : MB_LOG_LINK_TCP);
+    if (!serial) {
+        mb_log(d, MB_LOG_DEBUG, "parse_tcp_subsection", "[%s] [TCP_IP] [%s]", tx->section, l->tcp_ip);
+        mb_log(d, MB_LOG_DEBUG, "parse_tcp_subsection", "[%s] [TCP_PORT] [%d]", tx->section, l->tcp_port);
+        return;
+    }
+    const char *w = "parse_serial_subsection";
+    mb_log(d, MB_LOG_DEBUG, w, "[%s] [SERIAL_PORT] [%s]", tx->section, l->serial_port);
+    mb_log(d, MB_LOG_DEBUG, w, "[%s] [SERIAL_BAUD] [%d]", tx->section, l->serial_baud);
+    mb_log(d, MB_LOG_DEBUG, w, "[%s] [SERIAL_BITS] [%d]", tx->section, l->serial_bits);
+    mb_log(d, MB_LOG_DEBUG, w, "[%s] [SERIAL_PARITY] [%s]", tx->section, parities[(unsigned char)l->serial_parity]);
+    mb_log(d, MB_LOG_DEBUG, w, "[%s] [SERIAL_STOP] [%d]", tx->section, l->serial_stop);
+    mb_log(d, MB_LOG_DEBUG, w, "[%s] [SERIAL_DELAY_MS] [%d]", tx->section, l->serial_delay_ms);
+}
+
+/* Logs one parsed transaction the way LinuxCNC's INIT_DEBUG=3 shows it. */
+static void log_tx(const mb2hal_cfg_t *cfg, const mb_tx_cfg_t *tx, int num)
+{
+    const char *w = "parse_transaction_section";
+    int d = cfg->init_debug;
+    log_link(d, tx);
+    mb_log(d, MB_LOG_DEBUG, w, "[%s] [MB_SLAVE_ID] [%d]", tx->section, tx->slave_id);
+    mb_log(d, MB_LOG_DEBUG, w, "[%s] [FIRST_ELEMENT] [%d]", tx->section, tx->first_element);
+    mb_log(d, MB_LOG_DEBUG, w, "[%s] [NELEMENTS] [%d]", tx->section, tx->nelements);
+    for (int i = 0; tx->pin_names && i < tx->nelements; i++)
+        mb_log(d, MB_LOG_DEBUG, w, "[%s] [PIN_NAMES] [%s]", tx->section, tx->pin_names[i]);
+    mb_log(d, MB_LOG_DEBUG, w, "[%s] [MAX_UPDATE_RATE] [%0.3f]", tx->section, tx->max_update_rate);
+    mb_log(d, MB_LOG_DEBUG, w, "[%s] [MB_RESPONSE_TIMEOUT_MS] [%d]", tx->section, tx->resp_timeout_ms);
+    mb_log(d, MB_LOG_DEBUG, w, "[%s] [MB_BYTE_TIMEOUT_MS] [%d]", tx->section, tx->byte_timeout_ms);
+    mb_log(d, MB_LOG_DEBUG, w, "[%s] [DEBUG] [%d]", tx->section, tx->debug);
+    mb_log(d, MB_LOG_DEBUG, w, "[%s] [MB_TX_CODE] [%s] [%d]", tx->section, mb2hal_code_name(tx->code),
+           code_log_number(tx->code));
+    mb_log(d, MB_LOG_DEBUG, w, "[%s] [HAL_TX_NAME] [%s]", tx->section, tx->tx_name);
+    mb_log(d, MB_LOG_OK, "parse_ini_file", "parse_transaction_section %d OK", num);
 }
 
 /* Warns about keys no lookup asked for (typos, unused sections). */
@@ -281,11 +368,15 @@ int mb2hal_config_load(mb2hal_cfg_t *cfg, const char *path)
     mb_sec_t init = {&ini, "MB2HAL_INIT", 0};
     parse_init(cfg, &init);
     int errors = init.errors;
+    if (!errors)
+        log_init(cfg);
     for (int i = 0; i < cfg->ntx; i++) {
         mb_tx_cfg_t *tx = &cfg->tx[i];
         init_tx(tx, i ? &cfg->tx[i - 1] : NULL, i);
         mb_sec_t s = {&ini, tx->section, 0};
         parse_tx(cfg, &s, tx, i);
+        if (!s.errors && !errors)
+            log_tx(cfg, tx, i);
         errors += s.errors;
     }
     if (!errors)

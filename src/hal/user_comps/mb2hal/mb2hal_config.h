@@ -28,6 +28,7 @@ typedef struct {
     char (*pin_names)[MB2HAL_NAME_LEN]; /* NULL: pins are numbered NN */
     double max_update_rate;        /* Hz, 0 = as often as possible */
     int debug;
+    int version;                   /* [MB2HAL_INIT] VERSION: 10 or 11 (pin naming) */
 } mb_tx_cfg_t;
 
 /* The whole configuration. */

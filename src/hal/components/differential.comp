@@ -1,0 +1,18 @@
+component differential "Kinematics of a differential (bevel gear) wrist";
+pin in float roll_cmd "Commanded roll";
+pin in float pitch_cmd "Commanded pitch";
+pin out float motor0_cmd "roll + pitch";
+pin out float motor1_cmd "roll - pitch";
+pin in float motor0_fb;
+pin in float motor1_fb;
+pin out float roll_fb "(motor0 + motor1) / 2";
+pin out float pitch_fb "(motor0 - motor1) / 2";
+function _;
+license "GPL";
+author "OpenEMC";
+;;
+(void)period;
+motor0_cmd = roll_cmd + pitch_cmd;
+motor1_cmd = roll_cmd - pitch_cmd;
+roll_fb = (motor0_fb + motor1_fb) / 2;
+pitch_fb = (motor0_fb - motor1_fb) / 2;
