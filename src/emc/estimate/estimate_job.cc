@@ -206,6 +206,8 @@ bool EstimateJob::issue(const QueuedMsg &q, std::string *error)
         break;
     case Pre::MOTION_DONE:
         drain();
+        // non-moves carry no line: the list is issued after every line read, so it is that one
+        report_.set_line(q.line > 0 ? q.line : interp_->state().sequence_number);
         if (task_item(m)) return true;
         break;
     case Pre::NOTHING:

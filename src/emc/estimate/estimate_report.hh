@@ -29,6 +29,11 @@ public:
     void start_at(const EmcPose &p) { prev_ = p; }
     // Count one trajectory cycle with the tool in the spindle.
     void add(const SimSample &s, int tool);
+    // The source line of what happens now (dwells, tool changes: no move is executing).
+    void set_line(int line)
+    {
+        if (line > 0) line_ = line;
+    }
     // The last line of the program (for the line ranges).
     void set_last_line(int line) { last_line_ = line; }
     // Print the report to f; ranges: how many line ranges.
