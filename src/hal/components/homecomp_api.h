@@ -11,9 +11,14 @@ typedef struct {
     hal_s32_t *home_state;
 } homecomp_joint_t;
 
-/* State of the skeleton homing module. */
+/* Pins of the module as a whole (their pointers live in HAL memory, as HAL requires). */
 typedef struct {
     hal_bit_t *allow_sim_homed;
+} homecomp_global_t;
+
+/* State of the skeleton homing module. */
+typedef struct {
+    homecomp_global_t *global;
     int njoints;
     int all_homed;
     homecomp_joint_t *joint;
@@ -62,11 +67,14 @@ int homing_init(int id, double servo_period, int n_joints, int n_extrajoints, vo
     homecomp.joint = hal_malloc(sizeof(homecomp_joint_t) * (n_joints ? n_joints : 1));
     if (!homecomp.joint)
         return -ENOMEM;
+    homecomp.global = hal_malloc(sizeof(homecomp_global_t));
+    if (!homecomp.global)
+        return -ENOMEM;
     homecomp.njoints = n_joints;
-    int r = hal_pin_bit_newf(HAL_IO, &homecomp.allow_sim_homed, id, "motion.allow-sim-homed");
+    int r = hal_pin_bit_newf(HAL_IO, &homecomp.global->allow_sim_homed, id, "motion.allow-sim-homed");
     if (r)
         return r;
-    *homecomp.allow_sim_homed = 1;
+    *homecomp.global->allow_sim_homed = 1;
     for (int n = 0; n < n_joints && r == 0; n++)
         r = homecomp_joint_pins(id, n);
     return r;
@@ -78,7 +86,7 @@ bool get_homed(int jno)
 {
     if (jno < 0 || jno >= homecomp.njoints)
         return false;
-    return *homecomp.allow_sim_homed || *homecomp.joint[jno].home_sw_in;
+    return *homecomp.global->allow_sim_homed || *homecomp.joint[jno].home_sw_in;
 }
 EXPORT_SYMBOL(get_homed);
 

@@ -18,7 +18,12 @@ motion looks up.""";
 
 #define USERKINS_NAME "userkins"
 
-static hal_u32_t *echo_in, *echo_out;   /* made at the first type query */
+/* The demonstration pins, made at the first type query (pin pointers must live in HAL memory). */
+typedef struct {
+    hal_u32_t *in, *out;
+} userkins_echo_t;
+
+static userkins_echo_t *echo;
 static int inverse_seen, warned;
 
 /* Demonstration function: announce itself once, then count its calls on fpin. */
@@ -36,7 +41,7 @@ int kinematicsForward(const double *joint, EmcPose *world,
 {
     (void)fflags;
     (void)iflags;
-    if (echo_in && *echo_in && !inverse_seen && !warned) {
+    if (echo && *echo->in && !inverse_seen && !warned) {
         rtapi_print_msg(RTAPI_MSG_INFO, USERKINS_NAME " the 'in' pin not echoed until Inverse called\n");
         warned = 1;
     }
@@ -59,8 +64,8 @@ int kinematicsInverse(const EmcPose *world, double *joint,
     (void)iflags;
     (void)fflags;
     inverse_seen = 1;
-    if (echo_in && echo_out)
-        *echo_out = *echo_in;
+    if (echo)
+        *echo->out = *echo->in;
     joint[0] = world->tran.x;
     joint[1] = world->tran.y;
     joint[2] = world->tran.z;
@@ -78,10 +83,14 @@ KINEMATICS_TYPE kinematicsType(void)
 {
     static int set_up;
     if (!set_up) {
-        int r = hal_unready(comp_id);
-        if (r == 0) r = hal_pin_u32_newf(HAL_IN, &echo_in, comp_id, USERKINS_NAME ".in");
-        if (r == 0) r = hal_pin_u32_newf(HAL_OUT, &echo_out, comp_id, USERKINS_NAME ".out");
-        hal_ready(comp_id);
+        userkins_echo_t *e = hal_malloc(sizeof(*e));
+        int r = e ? hal_unready(comp_id) : -ENOMEM;
+        if (r == 0) r = hal_pin_u32_newf(HAL_IN, &e->in, comp_id, USERKINS_NAME ".in");
+        if (r == 0) r = hal_pin_u32_newf(HAL_OUT, &e->out, comp_id, USERKINS_NAME ".out");
+        if (e)
+            hal_ready(comp_id);
+        if (r == 0)
+            echo = e;
         if (r)
             rtapi_print_msg(RTAPI_MSG_ERR, "!!! " USERKINS_NAME " setup failed res=%d\n", r);
         set_up = 1;

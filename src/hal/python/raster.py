@@ -4,7 +4,8 @@
                                             # .enabled (bit in), .fault-code (s32 in)
     prog.begin(offset, bpp, ppu, count)     # header "offset;bpp;ppu;count;"
     prog.data("0E")                         # count*bpp/4 hex digits
-    prog.start()                            # run = TRUE; prog.stop() ends the pass
+    prog.start()                            # run = TRUE, waits until enabled (or a fault)
+    prog.stop()                             # run = FALSE, waits until enabled falls
     prog.exit()
 
 The program format and the fault codes are the raster component's (see its man page).
@@ -18,6 +19,9 @@ __all__ = ["FaultCodes", "RasterProgrammer"]
 
 # How long to wait for room in the port before giving up, in seconds.
 SEND_TIMEOUT = 5.0
+# How long start() and stop() wait for the component to answer on its enabled pin, in seconds
+# (an unwired enabled pin costs this much once per call).
+HANDSHAKE_TIMEOUT = 0.25
 
 
 class FaultCodes(enum.IntEnum):
@@ -65,11 +69,28 @@ class RasterProgrammer:
         """Send pixel data: bpp/4 hex digits per pixel."""
         self._send(pixels)
 
-    def start(self):
+    def start(self, timeout=HANDSHAKE_TIMEOUT):
+        """Set run and wait until the raster component runs the program (enabled) or faults, so
+        the axis position it starts from is the one set before start(). True when running."""
         self.run.value = True
+        return self._await(lambda: self.enabled.value or self.fault_code.value != 0, timeout) and \
+            bool(self.enabled.value)
 
-    def stop(self):
+    def stop(self, timeout=HANDSHAKE_TIMEOUT):
+        """Clear run and wait until the component has left the program (enabled falls), so the
+        next program cannot be mistaken for the rest of this one. True when it has."""
         self.run.value = False
+        return self._await(lambda: not self.enabled.value, timeout)
+
+    @staticmethod
+    def _await(condition, timeout):
+        """Poll condition every millisecond for up to timeout seconds; its last answer."""
+        deadline = time.monotonic() + timeout
+        while not condition():
+            if time.monotonic() > deadline:
+                return False
+            time.sleep(0.001)
+        return True
 
     def fault(self):
         """The component's fault code as a FaultCodes member (unknown values as int)."""

@@ -38,7 +38,7 @@ done
 # calls per second of one program
 rate() {
     /usr/bin/time -f "%U %S" -o "$WORK/time" "$RS274" -i "$WORK/bench.ini" -g "$WORK/$1.ngc" > /dev/null 2> "$WORK/err" || { cat "$WORK/time" "$WORK/err" >&2; return 1; }
-    awk -v n="$CALLS" -v what="$2" '{ s = $1 + $2; printf("rs274 %-32s %d calls: %.2f s CPU, %d calls/s\n", what, n, s, (s > 0 ? n / s : 0)) }' "$WORK/time"
+    awk -v n="$CALLS" -v what="$2" '{ s = $1 + $2; rate = 0; if (s != 0) rate = n / s; printf("rs274 %-32s %d calls: %.2f s CPU, %d calls/s\n", what, n, s, rate) }' "$WORK/time"
 }
 rate otwicecall1 "Python O-word sub"
 rate M450P1 "python= remap body"

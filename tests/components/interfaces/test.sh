@@ -19,7 +19,9 @@ session() {
 }
 trap 'realtime stop >/dev/null 2>&1' EXIT
 realtime stop >/dev/null 2>&1
-mods=$(cd "$top/rtlib" && ls ./*.so | sed 's|^\./||; s|\.so$||' | grep -v '^hal_lib$')
+skip=$(awk '!/^#/ && NF { print $1 }' elsewhere.txt)
+mods=$(cd "$top/rtlib" && ls ./*.so | sed 's|^\./||; s|\.so$||' | grep -v '^hal_lib$' |
+    grep -vxF -f <(printf '%s\n' $skip))
 kins=$(printf '%s\n' $mods | grep -E 'kins|trsrn|^millturn$')
 comps=$(printf '%s\n' $mods | grep -vxF -f <(printf '%s\n' $kins))
 echo "== components"

@@ -1,8 +1,9 @@
 #!/bin/bash
 # overrun-stop: periods no machine can run are refused; a thread that overruns every cycle
 # (20 us of work each 1 us) still lets halcmd, unload and realtime stop through.
+. "$(dirname "$0")/../../lib/testmods.sh"
 out=$(mktemp)
-trap 'timeout 60 realtime stop >/dev/null 2>&1; rm -f "$out"' EXIT
+trap 'timeout 60 realtime stop >/dev/null 2>&1; tm_cleanup; rm -f "$out"' EXIT
 realtime start 2>"$out" || exit 1
 # t CMD...: run a command with a time limit; says so when it hangs
 t() {

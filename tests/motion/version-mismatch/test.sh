@@ -1,7 +1,8 @@
 #!/bin/bash
 # motmod refuses kinematics, planner and homing tables built for another interface version.
+. "$(dirname "$0")/../../lib/testmods.sh"
 log=$(mktemp)
-trap 'halrun -U >/dev/null 2>&1; rm -f "$log"' EXIT
+trap 'halrun -U >/dev/null 2>&1; tm_cleanup; rm -f "$log"' EXIT
 try_with() {
     local before
     halrun -U >/dev/null 2>&1

@@ -10,6 +10,7 @@
 #include "hm2_config.h"
 #include "hm2_gtag.h"
 #include "hm2_modules.h"
+#include "hm2_sserial.h"
 
 #define HM2_VERSION "0.15"
 
@@ -102,6 +103,7 @@ typedef struct hm2_board {
     hm2_pktuart_t pktuart;
     hm2_bspi_t bspi;
     hm2_raw_t raw;
+    hm2_sserial_t sserial;
 
     bool read_requested;      /* read-request ran this cycle */
     bool first_write_done;
@@ -163,5 +165,17 @@ int hm2_export_functs(hm2_board_t *hm2);
 void hm2_force_write(hm2_board_t *hm2, bool clear_bite);
 void hm2_print_modules(hm2_board_t *hm2);
 void hm2_cleanup_modules(hm2_board_t *hm2);
+
+/* ---- Smart Serial (hm2_sserial*.c) ---- */
+int hm2_sserial_parse_md(hm2_board_t *hm2, int md_index);
+int hm2_sserial_export_port(hm2_board_t *hm2, hm2_sserial_port_t *p);
+void hm2_sserial_allocate_pins(hm2_board_t *hm2);
+void hm2_sserial_process_tram_read(hm2_board_t *hm2);
+void hm2_sserial_prepare_tram_write(hm2_board_t *hm2);
+void hm2_sserial_write(hm2_board_t *hm2);
+void hm2_sserial_print_module(hm2_board_t *hm2);
+void hm2_sserial_cleanup(hm2_board_t *hm2);
+void hm2_sserial_pack_outputs(hm2_sserial_channel_t *ch);
+void hm2_sserial_unpack_inputs(hm2_sserial_channel_t *ch);
 
 #endif

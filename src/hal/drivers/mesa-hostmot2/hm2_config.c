@@ -63,14 +63,21 @@ static int apply_sserial(hm2_config_t *cfg, const char *token, const char *value
     }
     int port = *p - '0';
     bool any_digit = false;
-    for (int c = 0, i = 0; value[i] && c < HM2_SSERIAL_MAX_CHANNELS; i++) {
+    for (int c = 0, i = 0; value[i]; i++) {
         char ch = value[i];
-        if (ch >= '0' && ch <= '9') {
-            cfg->sserial_modes[port][c++] = ch;
-            any_digit = true;
-        } else if (ch == 'x' || ch == 'X') {
-            cfg->sserial_modes[port][c++] = 'x';
+        bool digit = ch >= '0' && ch <= '9', off = ch == 'x' || ch == 'X';
+        if (!digit && !off) {
+            rtapi_snprintf(err, errlen, "sserial_port_%d=%s: '%c' is not a channel mode "
+                           "(each channel is a digit 0-9, or x to disable it)", port, value, ch);
+            return -EINVAL;
         }
+        if (c >= HM2_SSERIAL_MAX_CHANNELS) {
+            rtapi_snprintf(err, errlen, "sserial_port_%d=%s: more than %d channels", port, value,
+                           HM2_SSERIAL_MAX_CHANNELS);
+            return -EINVAL;
+        }
+        cfg->sserial_modes[port][c++] = digit ? ch : 'x';
+        any_digit = any_digit || digit;
     }
     if (any_digit && port + 1 > cfg->num_sserials)
         cfg->num_sserials = port + 1;

@@ -29,6 +29,7 @@ static void process_reads(hm2_board_t *hm2, long period)
     hm2_encoder_process_tram_read(hm2, period);
     hm2_stepgen_process_tram_read(hm2, period);
     hm2_bspi_process_tram_read(hm2);
+    hm2_sserial_process_tram_read(hm2);
     hm2_dpll_process_tram_read(hm2, period);
     hm2_raw_process_read(hm2);
 }
@@ -115,6 +116,7 @@ static void queue_cycle_writes(hm2_board_t *hm2, long period)
     hm2_pwmgen_prepare_tram_write(hm2);
     hm2_stepgen_prepare_tram_write(hm2, period);
     hm2_bspi_prepare_tram_write(hm2);
+    hm2_sserial_prepare_tram_write(hm2);
     if (hm2_tram_queue_writes(hm2) < 0) {
         *hm2->llio->io_error = 1;
         return;
@@ -126,6 +128,7 @@ static void queue_cycle_writes(hm2_board_t *hm2, long period)
     hm2_encoder_write(hm2);
     hm2_dpll_write(hm2, period);
     hm2_led_write(hm2);
+    hm2_sserial_write(hm2);
     hm2_raw_write(hm2);
 }
 
@@ -217,6 +220,7 @@ void hm2_print_modules(hm2_board_t *hm2)
     hm2_encoder_print_module(hm2);
     hm2_stepgen_print_module(hm2);
     hm2_pwmgen_print_module(hm2);
+    hm2_sserial_print_module(hm2);
 }
 
 /* Release every module's memory (HAL objects go with the driver's component). */
@@ -230,4 +234,5 @@ void hm2_cleanup_modules(hm2_board_t *hm2)
     hm2_uart_cleanup(hm2);
     hm2_pktuart_cleanup(hm2);
     hm2_bspi_cleanup(hm2);
+    hm2_sserial_cleanup(hm2);
 }

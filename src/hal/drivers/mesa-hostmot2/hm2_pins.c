@@ -109,6 +109,7 @@ int hm2_configure_pins(hm2_board_t *hm2)
     allocate_module_pins(hm2, HM2_GTAG_PKTUART_TX, hm2->pktuart.num_instances, false);
     allocate_module_pins(hm2, HM2_GTAG_PKTUART_RX, hm2->pktuart.num_instances, false);
     allocate_module_pins(hm2, HM2_GTAG_BSPI, hm2->bspi.num_instances, false);
+    hm2_sserial_allocate_pins(hm2);
     return 0;
 }
 

@@ -108,6 +108,7 @@ static int initial_transfer(hm2_board_t *hm2)
     hm2_watchdog_prepare_tram_write(hm2);
     hm2_ioport_gpio_prepare_tram_write(hm2);
     hm2_pwmgen_prepare_tram_write(hm2);
+    hm2_sserial_prepare_tram_write(hm2);
     if (hm2_tram_queue_writes(hm2) < 0 || hm2_tram_send_writes(hm2) < 0)
         *hm2->llio->io_error = 1;
     if (*hm2->llio->io_error) {

@@ -8,6 +8,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 #include <sys/socket.h>
 #include <time.h>
 #include <unistd.h>
@@ -52,6 +53,7 @@ static void usage(const char *why)
     fprintf(out, "usage: mesa-sim [--board NAME] [--ip ADDR] [--port N] [--mac XX:XX:XX:XX:XX:XX]\n"
                  "                [--loop stepgenS:encoderE[:COUNTS_PER_STEP]]\n"
                  "                [--motor pwmgenP:encoderE:COUNTS_PER_S] [--index encoderE:COUNTS]\n"
+                 "                [--remote CHANNEL:7i76|7i77[:UNIT] | --remote CHANNEL:none]\n"
                  "A simulated Mesa Ethernet card answering LBP16 on ADDR (default 127.0.0.1) port N\n"
                  "(default 27181); commands on stdin (see mesa-sim(1)).\nboards:");
     sim_list_boards(out);
@@ -97,6 +99,43 @@ static void parse_wiring(sim_card_t *c, const char *opt, const char *arg)
     c->num_loops++;
 }
 
+/* --remote CH:TYPE[:UNIT]: a Smart Serial remote (7i76) or none on a channel of the board's port. */
+static void parse_remote(sim_card_t *c, const char *arg)
+{
+    char buf[64], msg[128];
+    snprintf(buf, sizeof(buf), "%s", arg);
+    char *ch = strtok(buf, ":"), *type = strtok(NULL, ":"), *unit = strtok(NULL, ":");
+    int n = ch ? unit_of(ch, "", c->board->sserial_channels) : -1;
+    snprintf(msg, sizeof(msg), "--remote '%s': board %s has %d Smart Serial channels; types: 7i76, 7i77 (two channels), none",
+             arg, c->board->name, c->board->sserial_channels);
+    if (n < 0 || !type)
+        usage(msg);
+    if (!strcmp(type, "none")) {
+        memset(&c->sserial.remote[n], 0, sizeof(c->sserial.remote[n]));
+        return;
+    }
+    const sim_remote_type_t *t = sim_remote_type(type);
+    bool two = !strcasecmp(type, "7i77");
+    if (!t || !strcasecmp(type, "7i77-analog") || (two && n + 1 >= c->board->sserial_channels))
+        usage(msg);
+    uint32_t u = unit ? (uint32_t)strtoul(unit, NULL, 0) : 0x10000176u + n;
+    sim_remote_attach(&c->sserial.remote[n], t, u);
+    if (two)
+        sim_remote_attach(&c->sserial.remote[n + 1], sim_remote_type("7i77-analog"), u);
+}
+
+/* The board's own remotes: a 7I76E carries its 7I76 field I/O on channel 0, the 7I92 variant
+   a 7I77 on channels 0 (field I/O) and 1 (analog outputs). */
+static void default_remotes(sim_card_t *c)
+{
+    if (c->board->sserial_channels && c->board->variant) {
+        sim_remote_attach(&c->sserial.remote[0], sim_remote_type("7i77"), 0x10000177u);
+        sim_remote_attach(&c->sserial.remote[1], sim_remote_type("7i77-analog"), 0x10000177u);
+    } else if (c->board->sserial_channels) {
+        sim_remote_attach(&c->sserial.remote[0], sim_remote_type("7i76"), 0x10000176u);
+    }
+}
+
 /* Command-line options. */
 static void parse_args(sim_card_t *c, sim_options_t *o, int argc, char **argv)
 {
@@ -113,6 +152,10 @@ static void parse_args(sim_card_t *c, sim_options_t *o, int argc, char **argv)
         if (!strcmp(opt, "--board")) {
             if (!(c->board = sim_find_board(arg)))
                 usage("unknown --board");
+            memset(&c->sserial, 0, sizeof(c->sserial));
+            default_remotes(c);
+        } else if (!strcmp(opt, "--remote")) {
+            parse_remote(c, arg);
         } else if (!strcmp(opt, "--ip")) {
             o->ip = arg;
         } else if (!strcmp(opt, "--port")) {

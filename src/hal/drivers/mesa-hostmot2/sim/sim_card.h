@@ -5,6 +5,7 @@
 #include <stdbool.h>
 #include <stdint.h>
 #include <stdio.h>
+#include "sim_remote.h"
 
 #define SIM_MAX_PORTS 3
 #define SIM_MAX_IO (SIM_MAX_PORTS * 32)
@@ -36,7 +37,9 @@ typedef struct {
     int ports, port_width;
     int stepgens, encoders, pwmgens, uarts;
     uint32_t clock_low, clock_high;
+    int sserial_channels;           /* channels of its Smart Serial port (0 = none) */
     const uint32_t *pins;           /* pin descriptor of each IO (ports * port_width) */
+    const char *variant;            /* --board name of a firmware variant, e.g. "7i92-7i77" */
 } sim_board_t;
 
 /* A source feeding an encoder input: a stepgen's step output or a PWM-driven motor. */
@@ -99,6 +102,7 @@ typedef struct {
     uint32_t pwm_dds, pdm_dds, pwm_enable;
     uint32_t led;
     sim_uart_t uart[SIM_MAX_UARTS];
+    sim_sserial_t sserial;
 
     sim_loop_t loops[SIM_MAX_LOOPS];
     int num_loops;
@@ -132,6 +136,13 @@ void sim_reg_write(sim_card_t *c, uint16_t addr, uint32_t value);
 /* ---- UART (sim_uart.c) ---- */
 bool sim_uart_read(sim_card_t *c, uint16_t addr, uint32_t *value);
 bool sim_uart_write(sim_card_t *c, uint16_t addr, uint32_t value);
+
+/* ---- Smart Serial (sim_sserial.c) ---- */
+bool sim_sserial_read(sim_card_t *c, uint16_t addr, uint32_t *value);
+bool sim_sserial_write(sim_card_t *c, uint16_t addr, uint32_t value);
+
+/* ---- Smart Serial control commands (sim_sserial_cmd.c) ---- */
+int sim_sserial_command(sim_card_t *c, int argc, char **argv);
 
 /* ---- LBP16 (sim_lbp16.c) ---- */
 int sim_handle_datagram(sim_card_t *c, const uint8_t *in, int len, uint8_t *out, int cap);

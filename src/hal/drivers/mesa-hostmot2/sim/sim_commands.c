@@ -5,7 +5,7 @@
 #include <string.h>
 #include "sim_card.h"
 
-#define MAX_ARGS 4
+#define MAX_ARGS 5
 
 typedef int (*cmd_fn_t)(sim_card_t *c, int argc, char **argv);
 
@@ -73,6 +73,7 @@ static int cmd_get(sim_card_t *c, int argc, char **argv)
     if (!strcmp(what, "stepgen")) return cmd_get_stepgen(c, argc, argv);
     if (!strcmp(what, "encoder")) return cmd_get_encoder(c, argc, argv);
     if (!strcmp(what, "pwm")) return cmd_get_pwm(c, argc, argv);
+    if (!strcmp(what, "sserial")) return sim_sserial_command(c, argc, argv);
     if (!strcmp(what, "watchdog")) {
         sim_say("watchdog bitten %d timer 0x%08x", c->wd_bitten, c->wd_timer);
     } else if (!strcmp(what, "led")) {
@@ -81,7 +82,7 @@ static int cmd_get(sim_card_t *c, int argc, char **argv)
         uint16_t addr = (uint16_t)strtoul(argv[2], NULL, 0);
         sim_say("reg 0x%04x 0x%08x", addr, sim_reg_read(c, addr));
     } else {
-        sim_say("error: get what? (io N, stepgen N, encoder N, pwm N, reg ADDR, watchdog, led)");
+        sim_say("error: get what? (io N, stepgen N, encoder N, pwm N, sserial CH, reg ADDR, watchdog, led)");
     }
     return 0;
 }
@@ -89,7 +90,9 @@ static int cmd_get(sim_card_t *c, int argc, char **argv)
 /* set in N L (outside level of an IO) / set encoder N COUNTS. */
 static int cmd_set(sim_card_t *c, int argc, char **argv)
 {
-    if (argc == 4 && !strcmp(argv[1], "in")) {
+    if (argc > 1 && !strcmp(argv[1], "sserial")) {
+        sim_sserial_command(c, argc, argv);
+    } else if (argc == 4 && !strcmp(argv[1], "in")) {
         int io = index_arg(argv[2], c->board->ports * c->board->port_width, "io");
         if (io >= 0) {
             c->input_level[io] = atoi(argv[3]) != 0;
@@ -102,7 +105,7 @@ static int cmd_set(sim_card_t *c, int argc, char **argv)
             sim_say("ok");
         }
     } else {
-        sim_say("error: set in IO LEVEL | set encoder N COUNTS");
+        sim_say("error: set in IO LEVEL | set encoder N COUNTS | set sserial CH NAME VALUE");
     }
     return 0;
 }
@@ -161,6 +164,8 @@ static const struct {
     {"get", cmd_get}, {"set", cmd_set}, {"drop", cmd_fault}, {"garble", cmd_fault},
     {"stale", cmd_fault}, {"delay", cmd_fault}, {"pause", cmd_fault}, {"resume", cmd_fault},
     {"bite", cmd_fault}, {"quad-error", cmd_fault}, {"stats", cmd_stats}, {"quit", cmd_quit},
+    {"sserial-unplug", sim_sserial_command}, {"sserial-plug", sim_sserial_command},
+    {"sserial-busy", sim_sserial_command}, {"sserial-status", sim_sserial_command},
 };
 
 /* Run one command line; 1 = quit. */

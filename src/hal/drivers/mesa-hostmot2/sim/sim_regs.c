@@ -104,7 +104,7 @@ uint32_t sim_reg_read(sim_card_t *c, uint16_t addr)
     uint32_t v;
     if (addr == SIM_LED_BASE)
         return c->led;
-    if (sim_uart_read(c, addr, &v))
+    if (sim_uart_read(c, addr, &v) || sim_sserial_read(c, addr, &v))
         return v;
     if (addr < SIM_ROM_BYTES)
         return rom_word(c, addr);
@@ -196,7 +196,7 @@ void sim_reg_write(sim_card_t *c, uint16_t addr, uint32_t v)
     c->writes++;
     if (addr == SIM_LED_BASE)
         c->led = v;
-    else if (sim_uart_write(c, addr, v))
+    else if (sim_uart_write(c, addr, v) || sim_sserial_write(c, addr, v))
         return;
     else if (decode(addr, SIM_WATCHDOG_BASE, 3, &a) && a.inst == 0)
         watchdog_write(c, a.reg, v);
