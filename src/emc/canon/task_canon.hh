@@ -19,6 +19,8 @@ struct CanonConfig {
     int axis_mask = 7;              // X=1 Y=2 Z=4 A=8 ... W=256
     int spindles = 1;
     canon_axis_limits_t limits = {};  // [AXIS_L] MAX_VELOCITY / MAX_ACCELERATION / MAX_JERK
+    int tool_change_axes = 0;         // M6 first moves these (3, 6 or 9; 0 = no move) ...
+    double tool_change_position[9] = {};  // ... to here: XYZABCUVW machine coordinates
 };
 
 // Live machine state the canon queries answer from (task reads it from motion and io status).

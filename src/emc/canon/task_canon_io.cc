@@ -108,10 +108,17 @@ void TaskCanon::select_tool(int toolno)
     list_.append(m, 0);
 }
 
-// M6
+// M6: with [EMCIO]TOOL_CHANGE_POSITION a rapid there first (machine coordinates; the axes it
+// leaves out stay), then the change.
 void TaskCanon::change_tool()
 {
     flush();
+    if (cfg_.tool_change_axes > 0) {
+        EmcPose p = end_;
+        double *axis[9] = {&p.tran.x, &p.tran.y, &p.tran.z, &p.a, &p.b, &p.c, &p.u, &p.v, &p.w};
+        for (int i = 0; i < cfg_.tool_change_axes && i < 9; i++) *axis[i] = cfg_.tool_change_position[i];
+        queue_line(0, p, EMC_MOTION_TYPE_TOOLCHANGE, -1);
+    }
     list_.append(EMC_TOOL_LOAD(), 0);
     needs_.tool_data = true;
 }

@@ -1,5 +1,6 @@
 /* mot_cmd_spindle.c: spindle commands: on/off/speed steps, brake, orient, override, limits. */
 #include "rtapi.h"
+#include "rtapi_math.h"
 #include "mot_cmd.h"
 
 #define ORIENT_NONE 0
@@ -10,6 +11,16 @@ static void end_orient(mot_spindle_t *s)
 {
     s->orient_state = ORIENT_NONE;
     s->locked = 0;
+}
+
+/* A commanded speed within the [SPINDLE_n] forward/reverse limits (status shows this speed). */
+static double limited_speed(const mot_spindle_t *s, double rpm)
+{
+    if (rpm > 0.0)
+        return fmax(fmin(rpm, s->max_pos_speed), s->min_pos_speed);
+    if (rpm < 0.0)
+        return fmin(fmax(rpm, s->max_neg_speed), s->min_neg_speed);
+    return rpm;
 }
 
 /* SPINDLE_SCALE: spindle override. */
@@ -47,8 +58,9 @@ int mot_cmd_spindle_on(const emcmot_command_t *c)
         return EMCMOT_COMMAND_INVALID_PARAMS;
     s = &mot->spindle[n];
     end_orient(s);
-    s->speed = c->speed;
     s->css_factor = c->css_factor;
+    /* a constant surface speed's rpm cap is its own limit: the output clamps the result */
+    s->speed = c->css_factor != 0.0 ? c->speed : limited_speed(s, c->speed);
     s->css_xoffset = c->css_xoffset;
     s->on = 1;
     s->direction = c->speed < 0.0 ? -1 : 1;
@@ -104,6 +116,8 @@ static int speed_step(const emcmot_command_t *c, int sign)
     s->speed += sign * s->direction * s->increment;
     if (s->speed * s->direction < 0.0)
         s->speed = 0.0;
+    else if (s->css_factor == 0.0)
+        s->speed = limited_speed(s, s->speed);
     s->increasing = sign;
     return EMCMOT_COMMAND_OK;
 }

@@ -226,6 +226,12 @@ struct InterpState {
     {
         return v * external_length_units * units_per_mm_divisor();
     }
+    // #5400 / #<_current_tool>: an empty spindle is T0 (non-random) or -1 (random changer)
+    int loaded_tool_number() const;
+    // #<_current_pocket>: the loaded tool's pocket (random: 0, the spindle), -1 for none
+    int loaded_pocket_number() const;
+    // #<_selected_pocket>: the prepared tool's pocket, -1 when none is prepared
+    int selected_pocket_number() const;
 };
 
 #endif

@@ -121,12 +121,13 @@ double Interp::tool_comp_radius(const Block &b, int &orient) const
     return s_.user_to_program(s_.tools[index].diameter) / 2.0;
 }
 
-// Tool-data index of a block's H word (none or H0: the loaded tool).
+// Tool-data index of a block's H word (none, or H0 on a non-random changer: the loaded tool;
+// a random changer's H0 names tool 0, which must be in the table).
 int Interp::h_word_index(const Block &b) const
 {
     if (!b.word('h')) return 0;
     int h = clamp_int(b.value('h'));
-    int index = h == 0 ? 0 : find_tool_index(h);
+    int index = h == 0 && !s_.settings.random_toolchanger ? 0 : find_tool_index(h);
     if (index < 0)
         throw InterpError("Requested tool " + std::to_string(h) + " not found in the tool table");
     return index;

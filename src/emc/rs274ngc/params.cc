@@ -37,7 +37,7 @@ double Interp::get_numbered(int n) const
     INTERP_FRAME();
     if (n >= 5420 && n <= 5428) return s_.current[n - 5420];
     if (n >= 5021 && n <= 5029) return program_to_machine_pose(s_.current)[n - 5021];
-    if (n == 5400) return s_.tools.empty() ? 0 : s_.tools[0].toolno < 0 ? 0 : s_.tools[0].toolno;
+    if (n == 5400) return s_.loaded_tool_number();
     if (n >= 5401 && n <= 5413 && !s_.tools.empty()) {
         const CanonTool &t = s_.tools[0];
         const double off[9] = {t.offset.x, t.offset.y, t.offset.z, t.offset.a, t.offset.b,
@@ -49,6 +49,31 @@ double Interp::get_numbered(int n) const
         return t.orientation;
     }
     return s_.params[n];
+}
+
+// The loaded tool; an empty spindle is T0 on a non-random changer and -1 on a random one
+// (where T0 may be a real tool).
+int InterpState::loaded_tool_number() const
+{
+    int t = tools.empty() ? -1 : tools[0].toolno;
+    if (settings.random_toolchanger) return t < 0 ? -1 : t;
+    return t < 0 ? 0 : t;
+}
+
+// Pocket number of the loaded tool (a random changer's spindle is pocket 0), -1 for none.
+int InterpState::loaded_pocket_number() const
+{
+    if (settings.random_toolchanger) return loaded_tool_number() < 0 ? -1 : 0;
+    int i = current_pocket;
+    return i > 0 && i < (int)tools.size() ? tools[i].pocketno : -1;
+}
+
+// Pocket number of the prepared tool (index 0 is the spindle), -1 when none is prepared.
+int InterpState::selected_pocket_number() const
+{
+    int i = selected_pocket;
+    if (i < 0 || i >= (int)tools.size()) return -1;
+    return i == 0 ? 0 : tools[i].pocketno;
 }
 
 // Refuse writes to read-only numbered parameters.

@@ -60,11 +60,10 @@ const Predef PREDEFS[] = {
     {"_feed_hold", [](const InterpState &s) { return b(s.feed_hold); }},
     {"_feed", [](const InterpState &s) { return s.feed_rate; }},
     {"_rpm", [](const InterpState &s) { return std::fabs(s.speed[0]); }},
-    {"_current_tool", [](const InterpState &s) {
-         return s.tools.empty() || s.tools[0].toolno < 0 ? 0.0 : (double)s.tools[0].toolno; }},
-    {"_current_pocket", [](const InterpState &s) { return (double)s.current_pocket; }},
+    {"_current_tool", [](const InterpState &s) { return (double)s.loaded_tool_number(); }},
+    {"_current_pocket", [](const InterpState &s) { return (double)s.loaded_pocket_number(); }},
     {"_selected_tool", [](const InterpState &s) { return (double)s.selected_tool; }},
-    {"_selected_pocket", [](const InterpState &s) { return (double)s.selected_pocket; }},
+    {"_selected_pocket", [](const InterpState &s) { return (double)s.selected_pocket_number(); }},
     {"_call_level", [](const InterpState &s) { return (double)s.call_level; }},
     {"_metric_machine", [](const InterpState &s) { return (double)s.settings.metric_machine; }},
 };

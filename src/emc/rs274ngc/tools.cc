@@ -32,7 +32,8 @@ void Interp::do_select_tool(Block &b)
     INTERP_FRAME();
     if (!b.word('t')) return;
     int t = clamp_int(b.value('t'));
-    int index = t == 0 ? 0 : find_tool_index(t);
+    // T0 unloads a non-random spindle; on a random changer tool 0 is a tool like any other
+    int index = t == 0 && !s_.settings.random_toolchanger ? 0 : find_tool_index(t);
     if (index < 0)
         throw InterpError("Requested tool " + std::to_string(t) + " not found in the tool table");
     out().select_tool(t);

@@ -65,14 +65,15 @@ bool IoControl::load_tools(const std::string &path, std::vector<std::string> *er
     }
     bool ok = table_.load(path, errors);
     if (table_.random()) {
-        tool_in_spindle_ = table_.at(0).toolno > 0 ? table_.at(0).toolno : 0;
+        tool_in_spindle_ = table_.at(0).toolno;
     } else {
         int idx = table_.find(tool_in_spindle_);
         tooldata_entry_t e = idx > 0 ? table_.at(idx) : tooldata_empty_entry();
         if (idx <= 0) { e.toolno = tool_in_spindle_ > 0 ? tool_in_spindle_ : -1; }
         table_.put(0, e);
     }
-    prepped_ = -1;
+    if (pins_) *pins_->tool_number = tool_in_spindle_;
+    prepped_ = reported_prepped_ = -1;
     changed_ = true;
     return ok;
 }
@@ -86,6 +87,7 @@ void IoControl::update(EMC_IO_STAT &st)
         *pins_->coolant_flood = flood_;
         if (preparing_ && *pins_->tool_prepared) {
             preparing_ = false;
+            reported_prepped_ = prepped_;
             *pins_->tool_prepare = 0;
         }
         if (changing_ && *pins_->tool_changed) finish_change();
@@ -93,7 +95,7 @@ void IoControl::update(EMC_IO_STAT &st)
     }
     st.coolant.mist = mist_;
     st.coolant.flood = flood_;
-    st.tool.pocketPrepped = preparing_ ? -1 : prepped_;
+    st.tool.pocketPrepped = reported_prepped_;
     st.tool.toolInSpindle = tool_in_spindle_;
     st.tool.toolFromPocket = tool_from_pocket_;
     st.tool.toolTableCurrent = table_.at(0);
@@ -130,25 +132,42 @@ void IoControl::coolant(bool mist, bool on)
 }
 
 // T word: raise tool-prepare with the tool's number, pocket and index until tool-prepared.
+// The status keeps the previous prepared pocket until the changer answers. A random changer
+// asked for the tool it already holds (index 0) has nothing to fetch: no handshake.
 void IoControl::prepare(int tool, int index)
 {
     if (!table_.random() && tool == 0) index = 0;
     prep_tool_ = tool;
     prepped_ = index;
     int pocket = index >= 0 && index < table_.size() ? table_.at(index).pocketno : 0;
-    if (!table_.random() && index == 0) pocket = 0;
-    if (!pins_) return;
-    *pins_->tool_prep_number = tool;
-    *pins_->tool_prep_pocket = pocket;
-    *pins_->tool_prep_index = index < 0 ? 0 : index;
+    if (index == 0) pocket = 0;
+    if (pins_) {
+        *pins_->tool_prep_number = tool;
+        *pins_->tool_prep_pocket = pocket;
+        *pins_->tool_prep_index = index < 0 ? 0 : index;
+    }
+    if (!pins_ || (table_.random() && index == 0)) {
+        reported_prepped_ = index;
+        return;
+    }
+    // a non-random T0 (empty the spindle) names no pocket: known prepared at once, the
+    // handshake still runs so the changer can put the tool away
+    if (!table_.random() && index == 0) reported_prepped_ = 0;
     *pins_->tool_prepare = 1;
     preparing_ = true;
 }
 
-// M6: raise tool-change until tool-changed.
+// True when the prepared tool is the one already in the spindle (M6 then changes nothing).
+bool IoControl::prepared_is_loaded() const
+{
+    if (table_.random()) return prepped_ == 0;
+    return prepped_ >= 0 && prep_tool_ == tool_in_spindle_;
+}
+
+// M6: raise tool-change until tool-changed; nothing to do when the tool is already loaded.
 void IoControl::load()
 {
-    if (prepped_ < 0 && !(table_.random() && prep_tool_ == 0)) return;
+    if (prepped_ < 0 || prepared_is_loaded()) return;
     changing_ = true;
     if (pins_) *pins_->tool_change = 1;
     else finish_change();
@@ -166,9 +185,10 @@ void IoControl::finish_change()
             pocket.pocketno = 0;
             table_.put(0, pocket);
             table_.put(idx, spindle);
-            tool_from_pocket_ = idx;
         }
-        tool_in_spindle_ = table_.at(0).toolno > 0 ? table_.at(0).toolno : 0;
+        tool_in_spindle_ = table_.at(0).toolno;
+        // tool 0 (or an empty pocket) is "no tool": it came from no pocket
+        tool_from_pocket_ = tool_in_spindle_ > 0 ? idx : 0;
     } else {
         tooldata_entry_t e = idx > 0 && idx < table_.size() ? table_.at(idx) : tooldata_empty_entry();
         if (idx <= 0) e.toolno = -1;
@@ -176,7 +196,7 @@ void IoControl::finish_change()
         tool_in_spindle_ = idx > 0 ? e.toolno : 0;
         tool_from_pocket_ = idx > 0 ? e.pocketno : 0;
     }
-    prepped_ = -1;
+    prepped_ = reported_prepped_ = -1;
     changed_ = true;
     if (!pins_) return;
     *pins_->tool_change = 0;
@@ -202,13 +222,10 @@ void IoControl::set_number(int index)
         if (index == 0) e.toolno = -1;
         table_.put(0, e);
         tool_in_spindle_ = index > 0 ? e.toolno : 0;
-        tool_from_pocket_ = index > 0 ? e.pocketno : 0;
     }
+    // nothing was fetched from a pocket: tool-from-pocket keeps telling the last change
     changed_ = true;
-    if (pins_) {
-        *pins_->tool_number = tool_in_spindle_;
-        *pins_->tool_from_pocket = tool_from_pocket_;
-    }
+    if (pins_) *pins_->tool_number = tool_in_spindle_;
 }
 
 // New values for one tool. The row is found by number first: on a non-random changer row 0

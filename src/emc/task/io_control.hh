@@ -52,6 +52,7 @@ public:
 
 private:
     void finish_change();
+    bool prepared_is_loaded() const;
     int hal_id_ = -1;
     IoPins *pins_ = nullptr;
     ToolTable table_;
@@ -60,6 +61,7 @@ private:
     bool request_pulse_ = false;
     bool preparing_ = false, changing_ = false;
     int prepped_ = -1;          // tool-data index of the prepared tool
+    int reported_prepped_ = -1; // what status shows: set when the changer confirmed the prepare
     int prep_tool_ = 0;         // its number
     int tool_in_spindle_ = 0;
     int tool_from_pocket_ = 0;

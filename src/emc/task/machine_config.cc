@@ -191,6 +191,28 @@ void read_spindle(const Reader &r, MachineConfig &c, int n)
     p.increment = r.real(s, "INCREMENT", 100);
 }
 
+// [EMCIO]TOOL_CHANGE_POSITION: X Y Z [A B C [U V W]] machine coordinates M6 moves to first.
+void read_tool_change_position(const Reader &r, MachineConfig &c)
+{
+    std::istringstream in(r.text("EMCIO", "TOOL_CHANGE_POSITION"));
+    std::string tok;
+    int n = 0;
+    while (in >> tok) {
+        char *end = nullptr;
+        double v = strtod(tok.c_str(), &end);
+        if (!end || *end || n >= EMCMOT_MAX_AXIS) {
+            r.fail("EMCIO", "TOOL_CHANGE_POSITION", "needs 3, 6 or 9 numbers (got '" + tok + "')");
+            return;
+        }
+        c.tool_change_position[n++] = v;
+    }
+    if (n != 0 && n != 3 && n != 6 && n != 9) {
+        r.fail("EMCIO", "TOOL_CHANGE_POSITION", "needs 3, 6 or 9 numbers, not " + std::to_string(n));
+        return;
+    }
+    c.tool_change_axes = n;
+}
+
 void read_task(const Reader &r, MachineConfig &c)
 {
     std::string dir = dir_of(c.ini_path);
@@ -204,6 +226,7 @@ void read_task(const Reader &r, MachineConfig &c)
     std::string tt = r.text("EMCIO", "TOOL_TABLE");
     c.tool_table = resolve(dir, tt);
     c.random_toolchanger = r.boolean("EMCIO", "RANDOM_TOOLCHANGER", false);
+    read_tool_change_position(r, c);
     c.program_prefix = resolve(dir, r.text("DISPLAY", "PROGRAM_PREFIX"));
     c.on_abort_command = r.text("RS274NGC", "ON_ABORT_COMMAND");
     c.startup_code = r.text("RS274NGC", "RS274NGC_STARTUP_CODE");

@@ -74,6 +74,8 @@ struct MachineConfig {
     // io
     std::string tool_table;             // [EMCIO]TOOL_TABLE, absolute
     bool random_toolchanger = false;
+    int tool_change_axes = 0;           // [EMCIO]TOOL_CHANGE_POSITION: 0 (none), 3, 6 or 9 values
+    double tool_change_position[EMCMOT_MAX_AXIS] = {};  // XYZABCUVW, machine units
     std::string program_prefix;
     std::string on_abort_command;
     std::string startup_code;

@@ -23,6 +23,8 @@ Task::Task(const MachineConfig &cfg)
     cc.axis_mask = cfg.axis_mask;
     cc.spindles = cfg.spindles;
     cc.limits = machine_axis_limits(cfg);
+    cc.tool_change_axes = cfg.tool_change_axes;
+    for (int i = 0; i < 9; i++) cc.tool_change_position[i] = cfg.tool_change_position[i];
     canon_ = std::make_unique<TaskCanon>(cc, *this, list_);
     emc_set_text(st_.task.ini_filename, cfg.ini_path.c_str());
 }
@@ -85,8 +87,9 @@ bool Task::cycle()
         // like LinuxCNC, a command is read only once motion has handled the previous one's
         const NMLmsg *msg = command_ready() ? cmd_ch_->read() : nullptr;
         if (msg) {
-            st_.echo_serial_number = st_.task.echo_serial_number = msg->serial_number;
-            st_.command_type = st_.task.command_type = msg->type;
+            echo_serial_ = msg->serial_number;
+            echo_type_ = (int)msg->type;
+            echo_pending_ = true;
             handle_command(*msg);
         } else if (!cmd_ch_->error().empty()) {
             fprintf(stderr, "milltask: %s\n", cmd_ch_->error().c_str());

@@ -112,6 +112,7 @@ private:
     void start_system_cmd(const char *command);
     // status (task_status.cc)
     void update_status();
+    void update_echo();
     void fill_motion_status();
     void fill_task_status();
     int rcs_status() const;
@@ -135,6 +136,9 @@ private:
     double attach_deadline_ = 0;
     emcmot_status_t mst_ = {};
     uint32_t last_serial_ = 0;
+    // the command read last: its serial is echoed once motion took what it issued
+    int echo_serial_ = 0, echo_type_ = 0;
+    bool echo_pending_ = false;
     uint32_t seen_rejected_ = 0;
     MotionTranslator xl_;
     InterpList list_;

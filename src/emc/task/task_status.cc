@@ -139,21 +139,35 @@ void Task::fill_task_status()
     }
 }
 
-// RCS status: ERROR after a refused or failed command; DONE when nothing is pending.
+// RCS status: ERROR after a refused or failed command; DONE when nothing is pending (no move,
+// jog, homing, tool change, queued MDI or program).
 int Task::rcs_status() const
 {
     if (command_failed_ || exec_error_) return RCS_ERROR;
     bool coord_busy = traj_mode_ == EMC_TRAJ_MODE_COORD && !motion_done();
     bool joint_jog = traj_mode_ == EMC_TRAJ_MODE_FREE && mst_.jogging_active && !mst_.homing_active;
     bool echoed = !mot_ || (int32_t)(mst_.echo.serial - last_serial_) >= 0;
-    bool idle = exec_state_ == EMC_TASK_EXEC_DONE && !coord_busy && !joint_jog && echoed && io_.done() &&
+    // a homing in progress keeps the home command executing (wait_complete() returns homed)
+    bool idle = exec_state_ == EMC_TASK_EXEC_DONE && !coord_busy && !joint_jog && !mst_.homing_active &&
+                echoed && io_.done() &&
                 mdi_queue_.empty() && list_.empty() && !has_pending_ && !wait_synch_ &&
                 interp_state_ == EMC_TASK_INTERP_IDLE;
     return idle ? RCS_DONE : RCS_EXEC;
 }
 
+// The status echoes a command once motion has taken what it issued (as LinuxCNC, where task waits
+// for motion's acknowledgement): a client that sent M64 and polls after the echo sees the output.
+void Task::update_echo()
+{
+    if (!echo_pending_ || !motion_echoed()) return;
+    echo_pending_ = false;
+    st_.echo_serial_number = st_.task.echo_serial_number = echo_serial_;
+    st_.command_type = st_.task.command_type = echo_type_;
+}
+
 void Task::update_status()
 {
+    update_echo();
     fill_motion_status();
     fill_task_status();
     int rcs = rcs_status();

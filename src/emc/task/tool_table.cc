@@ -155,7 +155,7 @@ bool ToolTable::save(const std::string &path, std::string *error) const
 
 int ToolTable::find(int toolno) const
 {
-    if (toolno <= 0) return -1;
+    if (toolno < 0 || (toolno == 0 && !random_)) return -1;
     for (int i = random_ ? 0 : 1; i < (int)rows_.size(); i++)
         if (rows_[i].toolno == toolno) return i;
     return -1;

@@ -24,7 +24,7 @@ public:
     tooldata_entry_t &at(int index) { return rows_[index]; }
     const tooldata_entry_t &at(int index) const { return rows_[index]; }
     const std::vector<tooldata_entry_t> &rows() const { return rows_; }
-    // Index (> 0, or 0 on random changers) of tool toolno, -1 when absent. Tool 0 is -1 too.
+    // Index (> 0, or 0 on random changers) of tool toolno, -1 when absent. Tool 0 is a tool only on random changers.
     int find(int toolno) const;
     // Put entry at index, growing the table (new rows empty).
     void put(int index, const tooldata_entry_t &entry);

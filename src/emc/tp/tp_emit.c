@@ -118,9 +118,12 @@ static void piece_region(tp_planner_t *tp, const tp_geo_t *g, double u0, double 
     r->len = u1 - u0;
     double v_need = need_speed(tp, owner);
     r->v_mach = c.v >= v_need ? v_need : quantize(c.v);
-    r->a = quantize(c.a);
-    r->a_rest = fmax(r->a, quantize(c.a_rest));
-    r->j = quantize(c.j);
+    /* a straight piece keeps the machine's limits exactly (a lone G0 accelerates at
+     * MAX_ACCELERATION, as in LinuxCNC); curved pieces round down to the grid */
+    int straight = b.d2[TP_PATH_AX] == 0.0;
+    r->a = straight ? c.a : quantize(c.a);
+    r->a_rest = fmax(r->a, straight ? c.a_rest : quantize(c.a_rest));
+    r->j = straight ? c.j : quantize(c.j);
     r->v_feed = r->v_rapid = INFINITY;
     r->sync_k = INFINITY;
     if (owner->sync == TP_SYNC_POS)

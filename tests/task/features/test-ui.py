@@ -16,6 +16,12 @@ say("M66 timeout", mdi("M66 P0 L3 Q0.2"), mdi("(DEBUG, #5399)"), errors())
 hal.set_p("motion.digital-in-00", "1")
 say("M66 high", mdi("M66 P0 L3 Q1"), mdi("(DEBUG, #5399)"), errors())
 say("M66 E0 immediate", mdi("M66 E0 L0"), mdi("(DEBUG, #5399)"), errors())
+# an immediate output shows in the status as soon as the MDI command is acknowledged
+for cmd in ("M64 P1", "M68 E1 Q2.5", "M65 P1"):
+    c.mdi(cmd)
+    s.poll()
+    say(cmd, "dout1", s.dout[1], "aout1", round(s.aout[1], 3))
+c.wait_complete()
 say("G38.3 no contact", mdi("G38.3 Z-0.5 F30"), mdi("(DEBUG, #5070 #5063)"), errors(), pos())
 r = mdi("G38.2 Z-1 F30")
 time.sleep(0.1)

@@ -488,9 +488,39 @@ static void reverse_run(void)
     tp_planner_destroy(tp);
 }
 
+/* A lone straight move accelerates and brakes at exactly the machine's acceleration (the samples
+ * of a G0 follow a*t^2/2 as in LinuxCNC). */
+static void lone_move(void)
+{
+    tp_planner_t *tp = machine(0.0);
+    tp_cycle_in_t in = inputs();
+    tp_segment_t a = move(1, 0, 0, 4.0, 1);
+    tp_planner_add(tp, &a);
+    double x[3] = {0.0, 0.0, 0.0}, acc_hi = 0.0, acc_lo = 0.0, x3 = 0.0;
+    tp_cycle_out_t out;
+    for (int k = 0; k < 5000; k++) {
+        tp_planner_run_cycle(tp, &in, &out);
+        x[0] = x[1];
+        x[1] = x[2];
+        x[2] = out.pos.tran.x;
+        if (k == 2)
+            x3 = out.pos.tran.x;
+        if (k >= 1) {
+            double acc = (x[2] - 2.0 * x[1] + x[0]) / (T * T);
+            acc_hi = fmax(acc_hi, acc);
+            acc_lo = fmin(acc_lo, acc);
+        }
+        if (out.done)
+            break;
+    }
+    printf("lone move: x after 3 cycles %.9f, sampled acceleration %.6f .. %.6f\n", x3, acc_lo, acc_hi);
+    tp_planner_destroy(tp);
+}
+
 int main(void)
 {
     exact_modes();
+    lone_move();
     corner_modes();
     overrides();
     hold_and_pause();

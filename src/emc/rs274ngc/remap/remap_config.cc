@@ -10,12 +10,12 @@
 
 namespace {
 
-// Characters an argspec may hold: [@A-KMNP-Za-kmnp-z^>].
+// Characters an argspec may hold: [@A-NP-Za-np-z^>] (L too: M66 remaps take its wait mode).
 bool argspec_char_ok(char c)
 {
     if (c == '@' || c == '^' || c == '>') return true;
     char u = (char)toupper((unsigned char)c);
-    return u >= 'A' && u <= 'Z' && u != 'L' && u != 'O';
+    return u >= 'A' && u <= 'Z' && u != 'O';
 }
 
 // Built-in M codes that may be remapped (the "existing codes" list) with their own modal group.

@@ -1,0 +1,4 @@
+#!/bin/bash
+# Non-random tool changer with a hand-answered handshake (see test-ui.py).
+. ../lib/run-machine.sh
+run_machine
