@@ -9,6 +9,11 @@ import re
 import sys
 import tempfile
 
+# the launcher's package (built into lib/python) holds the one Python copy of the key formula
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.realpath(__file__))),
+                                "lib", "python"))
+from openemc_launcher.sysv import instance_key  # noqa: E402
+
 SHM_KEYS = ((0x00000064, "Emc motion"), (0x48414C32, "Hal"), (0x48484C34, "UUID"),
             (0x90280A48, "Rtapi"), (0x130CF406, "Hal scope"), (0x434C522B, "Classicladder"),
             (1001, "NML emcCommand"), (1002, "NML emcStatus"), (1003, "NML emcError"),
@@ -33,7 +38,8 @@ def shm_segments():
 
 def instance_keys(instance):
     """The watched keys of one instance as (key, use name)."""
-    return [(base ^ (instance << 24), use) for base, use in SHM_KEYS]
+    return [(instance_key(base, instance), use) for base, use in SHM_KEYS]
+
 
 
 def remove_segment(shmid):

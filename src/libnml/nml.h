@@ -83,7 +83,7 @@ const nml_buffer_cfg_t *nml_config_buffer(const nml_config_t *cfg, const char *n
 /* The P line of process for buffer (its own line, else its `default` line), or NULL. */
 const nml_process_cfg_t *nml_config_process(const nml_config_t *cfg, const char *process,
                                             const char *buffer);
-/* This instance's SysV key of a buffer: key ^ (OPENEMC_INSTANCE << 24), as HAL's keys. */
+/* This instance's SysV key of a buffer: rtapi_instance_key(key), as HAL's keys. */
 int nml_buffer_key(const nml_buffer_cfg_t *buffer);
 
 /* ------------------------------------------------------------------ channels */

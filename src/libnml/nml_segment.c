@@ -200,7 +200,7 @@ int nml_segment_open(struct nml_channel *ch, char *err, size_t errlen)
 {
     ch->shmid = -1;
     if (rtapi_instance() < 0) {
-        snprintf(err, errlen, "%s: OPENEMC_INSTANCE is not an instance number 0..255", ch->buffer.name);
+        snprintf(err, errlen, "%s: OPENEMC_INSTANCE is not an instance number 0..16777215", ch->buffer.name);
         return -EINVAL;
     }
     ch->key = nml_buffer_key(&ch->buffer);

@@ -23,7 +23,7 @@ static int usage(FILE *out, int status)
     fprintf(out, "Usage: rtapi_app start | ping | exit | check_rt | list\n"
             "       rtapi_app load <module> [name=value ...] | unload <module> ...\n"
             "       rtapi_app debug <0..5> | newinst <comp> <name> [args]\n"
-            "The realtime master of instance $OPENEMC_INSTANCE (0..255, default 0): 'start' runs it,\n"
+            "The realtime master of instance $OPENEMC_INSTANCE (0..16777215, default 0): 'start' runs it,\n"
             "the other commands are sent to it (a missing master is started first).\n");
     return status;
 }

@@ -7,25 +7,30 @@ if [ -x "$here/rtapi_app" ]; then RTAPI_APP=$here/rtapi_app; else RTAPI_APP=rtap
 case "${1:-}" in
     --help|-h)
         echo "Usage: realtime {start|load|stop|unload|restart|status|verify}"
-        echo "Starts, stops or checks the rtapi_app master of instance \$OPENEMC_INSTANCE (0..255,"
+        echo "Starts, stops or checks the rtapi_app master of instance \$OPENEMC_INSTANCE (0..16777215,"
         echo "default 0); stop also removes that instance's shared memory. verify prints the"
         echo "kind of realtime this machine offers and exits 0 only when it is realtime."
         exit 0 ;;
 esac
 instance=${OPENEMC_INSTANCE:-0}
-# a decimal 0..255, as rtapi_instance() accepts; anything else would share another session
+# a decimal 0..16777215 (at most 8 digits), as rtapi_instance() accepts; anything else would
+# share another session
 case "$instance" in
-    [0-9]|[0-9][0-9]|[0-9][0-9][0-9]) instance=$((10#$instance)) ;;
-    *) instance=256 ;;
+    ''|*[!0-9]*) instance=-1 ;;
+    *) if [ ${#instance} -le 8 ]; then instance=$((10#$instance)); else instance=-1; fi ;;
 esac
-if [ "$instance" -gt 255 ]; then
-    echo "realtime: OPENEMC_INSTANCE='$OPENEMC_INSTANCE' is not an instance number 0..255" >&2
+if [ "$instance" -lt 0 ] || [ "$instance" -gt 16777215 ]; then
+    echo "realtime: OPENEMC_INSTANCE='$OPENEMC_INSTANCE' is not an instance number 0..16777215" >&2
     exit 1
 fi
 
 # instance_key BASE: the SysV key this instance uses for a LinuxCNC base key
 instance_key() {
-    printf '0x%08x' $(( $1 ^ (instance << 24) ))
+    if [ "$instance" -le 255 ]; then
+        printf '0x%08x' $(( $1 ^ (instance << 24) ))
+    else
+        printf '0x%08x' $(( ($1 ^ (instance << 8 | 0xA5)) & 0xFFFFFFFF ))
+    fi
 }
 
 # remove_shm: drop the HAL, RTAPI and id-counter segments of this instance

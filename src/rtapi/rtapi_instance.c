@@ -7,7 +7,7 @@
 #include <unistd.h>
 #include "rtapi_instance.h"
 
-/* Parse $OPENEMC_INSTANCE once: unset or empty is 0, a decimal 0..255 is itself. Anything else
+/* Parse $OPENEMC_INSTANCE once: unset or empty is 0, a decimal 0..16777215 is itself. Anything else
    is refused (reported once), because two sessions must never share keys or sockets. */
 int rtapi_instance(void)
 {
@@ -20,7 +20,7 @@ int rtapi_instance(void)
     text = getenv("OPENEMC_INSTANCE");
     if (text && *text) {
         size_t digits = strspn(text, "0123456789");
-        value = digits > 0 && digits <= 3 && text[digits] == '\0' ? strtol(text, NULL, 10) : -1;
+        value = digits > 0 && digits <= 8 && text[digits] == '\0' ? strtol(text, NULL, 10) : -1;
     }
     if (value < 0 || value > RTAPI_MAX_INSTANCE) {
         fprintf(stderr, "rtapi: OPENEMC_INSTANCE='%s' is not an instance number 0..%d; "
@@ -35,9 +35,14 @@ int rtapi_instance(void)
 /* The key this instance uses for a LinuxCNC base key (-1 for an invalid instance). */
 int rtapi_instance_key(int base_key)
 {
+    unsigned instance;
+
     if (rtapi_instance() < 0)
         return -1;
-    return (int)((unsigned)base_key ^ ((unsigned)rtapi_instance() << 24));
+    instance = (unsigned)rtapi_instance();
+    if (instance <= RTAPI_NARROW_INSTANCE_MAX)
+        return (int)((unsigned)base_key ^ (instance << 24));
+    return (int)((unsigned)base_key ^ (instance << 8 | RTAPI_WIDE_INSTANCE_TAG));
 }
 
 /* $HOME, else the password entry's home, else /tmp. */

@@ -110,7 +110,7 @@ int emcmot_attach(int base_key, int flags, emcmot_client_t **client, char *why, 
         return -ENOMEM;
     }
     if (rtapi_instance() < 0) {
-        snprintf(why, why_size, "OPENEMC_INSTANCE is not an instance number 0..255");
+        snprintf(why, why_size, "OPENEMC_INSTANCE is not an instance number 0..16777215");
         free(c);
         return -EINVAL;
     }

@@ -171,7 +171,7 @@ tooldata_t *tooldata_open(int create, char *err, size_t errlen)
     }
     td->shmid = -1;
     if (rtapi_instance() < 0) {
-        snprintf(err, errlen, "tool data: OPENEMC_INSTANCE is not an instance number 0..255");
+        snprintf(err, errlen, "tool data: OPENEMC_INSTANCE is not an instance number 0..16777215");
         free(td);
         errno = EINVAL;
         return NULL;

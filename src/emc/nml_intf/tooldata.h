@@ -12,7 +12,7 @@
 extern "C" {
 #endif
 
-/* SysV base key of the segment; the key used is TOOLDATA_BASE_KEY ^ (instance << 24). */
+/* SysV base key of the segment; the key used is rtapi_instance_key(TOOLDATA_BASE_KEY). */
 #define TOOLDATA_BASE_KEY 0x00544F4C
 /* Entries the segment holds: index 0 is the tool in the spindle (CANON_POCKETS_MAX). */
 #define TOOLDATA_MAX_ENTRIES CANON_POCKETS_MAX

@@ -162,6 +162,10 @@ void Task::issue(const QueuedMsg &q)
     case EMC_SYSTEM_CMD_TYPE: start_system_cmd(emc_msg_as<EMC_SYSTEM_CMD>(&m)->string); return;
     default:
         issue_motion(m);
+        // count the move until motion's next status does: the queue-room precondition must not
+        // let one cycle push more moves than the planner can take (motion holds them in the ring,
+        // which then fills while the planner waits, e.g. under feed hold)
+        if (precondition_of(m.type) == EMC_TASK_EXEC_WAITING_FOR_MOTION_QUEUE) mst_.queue_depth++;
         return;
     }
 }

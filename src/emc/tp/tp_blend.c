@@ -1,4 +1,4 @@
-/* tp_blend.c: quintic G2 blends: construction (scale fixed point), sizing tables and deviation checks. */
+/* tp_blend.c: corner blends (quintic G2, parabolic G1): construction, sizing tables and deviation checks. */
 #include <math.h>
 #include <string.h>
 #include "tp_blend.h"
@@ -7,8 +7,9 @@
 #define TP_BLEND_LAM_ITER 6
 #define TP_BLEND_SAMPLES 9          /* points of each side of the original path in deviation checks */
 
-/* Per unit cut of a line-line corner: vertex miss, largest |p''| and |p'''| along the blend. */
-static double tab_miss[TP_BLEND_TABLE], tab_d2[TP_BLEND_TABLE], tab_d3[TP_BLEND_TABLE];
+/* Per shape and unit cut of a line-line corner: vertex miss, largest |p''| and |p'''| along the
+ * blend. */
+static double tab_miss[2][TP_BLEND_TABLE], tab_d2[2][TP_BLEND_TABLE], tab_d3[2][TP_BLEND_TABLE];
 static int tab_ready;
 
 /* Quintic with scale lam matching its own length (so length is the parameter). */
@@ -29,6 +30,34 @@ static int build_quintic(tp_quintic_t *q, const tp_jet_t *a, const tp_jet_t *b, 
         if (fabs(step) <= 1e-6 * len)
             break;
     }
+    tp_quintic_hermite(q, a, b, lam);
+    *lam_out = lam;
+    return 0;
+}
+
+/* End data of a G1 blend: the parabola from a.p to b.p whose tangents meet at the corner (for
+ * lines: the quadratic Bezier a.p, corner, b.p), reparameterised by u + c u (1 - u) so that its
+ * parameter speed is the same at both ends; that speed (the harmonic mean of 2 da and 2 db) is
+ * returned.  Run at constant parameter speed it is the constant-acceleration change from one
+ * velocity to the other: the smallest acceleration on every axis a corner of these cuts allows. */
+static double g1_ends(tp_jet_t *a, tp_jet_t *b, double da, double db)
+{
+    double c = (db - da) / (da + db), lam = 4.0 * da * db / (da + db), l2 = lam * lam;
+    for (int i = 0; i < TP_NAX; i++) {
+        double corner = 0.5 * (a->p.x[i] + da * a->d1.x[i] + b->p.x[i] - db * b->d1.x[i]);
+        double q2 = 2.0 * (a->p.x[i] - 2.0 * corner + b->p.x[i]);
+        a->d2.x[i] = (q2 * (1.0 + c) * (1.0 + c) - 4.0 * c * da * a->d1.x[i]) / l2;
+        b->d2.x[i] = (q2 * (1.0 - c) * (1.0 - c) - 4.0 * c * db * b->d1.x[i]) / l2;
+    }
+    return lam;
+}
+
+/* Quintic through the end data at parameter scale lam (G1 blends: no length fixed point). */
+static int fixed_quintic(tp_quintic_t *q, const tp_jet_t *a, const tp_jet_t *b, double lam,
+                         double *lam_out)
+{
+    if (!(lam > 1e-12) || !isfinite(lam))
+        return -1;
     tp_quintic_hermite(q, a, b, lam);
     *lam_out = lam;
     return 0;
@@ -85,35 +114,39 @@ static double quintic_miss(const tp_quintic_t *q, const tp_vec_t *c)
     return sqrt(fmin(dbest, fmin(f1, f2)));
 }
 
-/* Fill the line-line tables: a unit cut on each side of corners of 0..180 degrees. */
+/* Fill the line-line tables: a unit cut on each side of corners of 0..180 degrees, each shape. */
 void tp_blend_init(void)
 {
     if (tab_ready)
         return;
-    for (int k = 0; k < TP_BLEND_TABLE; k++) {
-        double th = fmin(k, 179.0) * M_PI / 180.0;
-        tp_jet_t a, b;
-        memset(&a, 0, sizeof(a));
-        memset(&b, 0, sizeof(b));
-        a.p.x[0] = -1.0;
-        a.d1.x[0] = 1.0;
-        b.p.x[0] = cos(th);
-        b.p.x[1] = sin(th);
-        b.d1.x[0] = cos(th);
-        b.d1.x[1] = sin(th);
-        tp_geo_t g;
-        memset(&g, 0, sizeof(g));
-        g.kind = TP_GEO_QUINTIC;
-        g.metric = TP_METRIC_XYZ;
-        if (build_quintic(&g.u.q, &a, &b, TP_METRIC_XYZ, 8.0, &g.len) < 0) {
-            tab_miss[k] = 1.0;
-            tab_d2[k] = tab_d3[k] = 1e6;
-            continue;
+    for (int shape = TP_BLEND_G2; shape <= TP_BLEND_G1; shape++)
+        for (int k = 0; k < TP_BLEND_TABLE; k++) {
+            double th = fmin(k, 179.0) * M_PI / 180.0;
+            tp_jet_t a, b;
+            memset(&a, 0, sizeof(a));
+            memset(&b, 0, sizeof(b));
+            a.p.x[0] = -1.0;
+            a.d1.x[0] = 1.0;
+            b.p.x[0] = cos(th);
+            b.p.x[1] = sin(th);
+            b.d1.x[0] = cos(th);
+            b.d1.x[1] = sin(th);
+            tp_geo_t g;
+            memset(&g, 0, sizeof(g));
+            g.kind = TP_GEO_QUINTIC;
+            g.metric = TP_METRIC_XYZ;
+            int bad = shape == TP_BLEND_G1
+                          ? fixed_quintic(&g.u.q, &a, &b, g1_ends(&a, &b, 1.0, 1.0), &g.len)
+                          : build_quintic(&g.u.q, &a, &b, TP_METRIC_XYZ, 8.0, &g.len);
+            if (bad < 0) {
+                tab_miss[shape][k] = 1.0;
+                tab_d2[shape][k] = tab_d3[shape][k] = 1e6;
+                continue;
+            }
+            tp_vec_t origin = {{0}};
+            tab_miss[shape][k] = quintic_miss(&g.u.q, &origin);
+            unit_peaks(&g, &tab_d2[shape][k], &tab_d3[shape][k]);
         }
-        tp_vec_t origin = {{0}};
-        tab_miss[k] = quintic_miss(&g.u.q, &origin);
-        unit_peaks(&g, &tab_d2[k], &tab_d3[k]);
-    }
     tab_ready = 1;
 }
 
@@ -139,6 +172,7 @@ void tp_corner_describe(tp_corner_t *c, const tp_geo_t *ga, const tp_geo_t *gb)
     c->ga = ga;
     c->gb = gb;
     c->theta = acos(fmax(-1.0, fmin(1.0, cs)));
+    c->shape = TP_BLEND_G2;
     tp_vec_t dk = tp_vec_sub(&ja.d2, &jb.d2);
     c->kink = sqrt(tp_vec_dot(&dk, &dk));
 }
@@ -147,7 +181,7 @@ void tp_corner_describe(tp_corner_t *c, const tp_geo_t *ga, const tp_geo_t *gb)
 double tp_blend_tol_cut(const tp_corner_t *c, double tol)
 {
     double d = INFINITY;
-    double miss = tab_at(tab_miss, c->theta);
+    double miss = tab_at(tab_miss[c->shape], c->theta);
     if (c->theta > 1e-9 && miss > 1e-15)
         d = tol / miss;
     if (c->kink > 1e-12)
@@ -158,7 +192,7 @@ double tp_blend_tol_cut(const tp_corner_t *c, double tol)
 /* Smallest symmetric cut for which the blend's curvature and its change allow speed v. */
 double tp_blend_need_cut(const tp_corner_t *c, double v, double acc, double jerk)
 {
-    double d2 = tab_at(tab_d2, c->theta), d3 = tab_at(tab_d3, c->theta);
+    double d2 = tab_at(tab_d2[c->shape], c->theta), d3 = tab_at(tab_d3[c->shape], c->theta);
     double d = 0.0;
     if (acc > 0.0)
         d = fmax(d, v * v * d2 / acc);
@@ -178,13 +212,15 @@ int tp_blend_build(tp_geo_t *out, const tp_corner_t *c, const tp_blend_spec_t *s
 {
     tp_jet_t a = tp_geo_jet(c->ga, c->ga->len - spec->da);
     tp_jet_t b = tp_geo_jet(c->gb, spec->db);
+    memset(out, 0, sizeof(*out));
+    out->kind = TP_GEO_QUINTIC;
+    out->metric = c->ga->metric;
+    if (c->shape == TP_BLEND_G1)
+        return fixed_quintic(&out->u.q, &a, &b, g1_ends(&a, &b, spec->da, spec->db), &out->len);
     if (spec->ka_set)
         a.d2 = spec->ka;
     if (spec->kb_set)
         b.d2 = spec->kb;
-    memset(out, 0, sizeof(*out));
-    out->kind = TP_GEO_QUINTIC;
-    out->metric = c->ga->metric;
     double lam_max = 2.0 * (spec->da + spec->db);
     return build_quintic(&out->u.q, &a, &b, out->metric, lam_max, &out->len);
 }
@@ -266,8 +302,8 @@ static double quick_deviation(const tp_geo_t *blend, const tp_corner_t *c, const
 }
 
 /* The larger of the vertex miss and the path deviation (exact where the estimate is not clearly
- * inside tol).  A line-line blend without end curvature stays inside the corner, so its vertex
- * miss is its deviation. */
+ * inside tol).  A line-line blend without end curvature, or a parabolic one, stays inside the
+ * corner, so its vertex miss is its deviation. */
 double tp_blend_worst(const tp_geo_t *blend, const tp_corner_t *c, const tp_blend_spec_t *spec, double tol)
 {
     if (c->ga->kind == TP_GEO_LINE && c->gb->kind == TP_GEO_LINE) {
@@ -275,7 +311,7 @@ double tp_blend_worst(const tp_geo_t *blend, const tp_corner_t *c, const tp_blen
         double quick = quick_deviation(blend, c, spec, &corner);
         if (quick <= 0.5 * tol)
             return quick;
-        if (!spec->ka_set && !spec->kb_set)
+        if (c->shape == TP_BLEND_G1 || (!spec->ka_set && !spec->kb_set))
             return quintic_miss(&blend->u.q, &corner);
     }
     double miss, dev;

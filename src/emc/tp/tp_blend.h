@@ -4,12 +4,20 @@
 
 #include "tp_geom.h"
 
+/* Blend shapes: G2 (curvature-continuous, for jerk limits) or G1 (a parabola run at constant
+ * parameter speed: a constant acceleration, which may jump at its ends; trapezoid planning). */
+typedef enum tp_blend_shape {
+    TP_BLEND_G2 = 0,
+    TP_BLEND_G1 = 1
+} tp_blend_shape_t;
+
 /* A corner between the end of geometry ga and the start of geometry gb. */
 typedef struct tp_corner {
     const tp_geo_t *ga;
     const tp_geo_t *gb;
     double theta;               /* angle between the tangents at the corner, rad */
     double kink;                /* |curvature jump| at the corner (tangent joins) */
+    tp_blend_shape_t shape;     /* G2 unless the caller asks for G1 */
 } tp_corner_t;
 
 /* How a blend is placed: distances cut from each side and curvature overrides at the ends. */
@@ -21,7 +29,7 @@ typedef struct tp_blend_spec {
 
 /* Tables for line-line corners; filled once by tp_blend_init. */
 void tp_blend_init(void);
-/* Describe the corner between ga's end and gb's start. */
+/* Describe the corner between ga's end and gb's start (shape G2). */
 void tp_corner_describe(tp_corner_t *c, const tp_geo_t *ga, const tp_geo_t *gb);
 /* Largest symmetric cut d whose blend passes within tol of the corner (line-line estimate). */
 double tp_blend_tol_cut(const tp_corner_t *c, double tol);

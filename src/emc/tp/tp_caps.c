@@ -1,12 +1,14 @@
 /* tp_caps.c: caps of a piece: per axis |d1| a + |d2| v^2 <= A and |d1| j + 3 |d2| v a + |d3| v^3 <= J. */
 #include <math.h>
 #include "tp_caps.h"
+#include "tp_profile.h"
 
 /* Derivative bounds below this count as zero. */
 #define TP_CAPS_TINY 1e-12
-#define TP_CAPS_ITER 14
-/* Lowest cap tried, as a share of the highest (the bisection runs on a log scale). */
+/* Lowest cap, as a share of the highest (a cap is never zero). */
 #define TP_CAPS_V_FLOOR 1e-12
+/* Closed-form speeds are taken this much low, so that rounding never puts them past the limit. */
+#define TP_CAPS_ROOT_MARGIN (1.0 - 1e-9)
 /* Weight of the speed-change time in the choice of the reserve. */
 #define TP_CAPS_CHANGE_SHARE 0.1
 
@@ -97,6 +99,35 @@ static void caps_at_speed(const tp_bounds_t *b, const tp_axlim_t *l, double v, i
     out->a_rest = with_jerk || !(a_line > out->a) ? out->a : a_line;
 }
 
+/* Highest speed at which every axis leaves a_keep of tangential acceleration and j_keep of
+ * tangential jerk: per axis d2 v^2 <= A - a_keep d1 and d3 v^3 + 3 d2 a_keep v <= J - j_keep d1,
+ * both increasing in v, so each has one root in closed form; -1 when even rest is too fast. */
+static double speed_keeping(const tp_bounds_t *b, const tp_axlim_t *l, int with_jerk, double a_keep,
+                            double j_keep)
+{
+    double v = INFINITY;
+    for (int i = 0; i < TP_NBOUND; i++) {
+        if (l->acc[i] > 0.0) {
+            double room = l->acc[i] - (b->d1[i] > TP_CAPS_TINY ? a_keep * b->d1[i] : 0.0);
+            if (room < 0.0)
+                return -1.0;
+            if (b->d2[i] > 0.0)
+                v = fmin(v, sqrt(room / b->d2[i]));
+        }
+        if (!with_jerk || !(l->jerk[i] > 0.0))
+            continue;
+        double room = l->jerk[i] - j_keep * b->d1[i];
+        double c = 3.0 * b->d2[i] * a_keep;
+        if (room < 0.0)
+            return -1.0;
+        if (b->d3[i] > 0.0)
+            v = fmin(v, tp_cubic_root(c / b->d3[i], -room / b->d3[i]));
+        else if (c > 0.0)
+            v = fmin(v, room / c);
+    }
+    return v;
+}
+
 /* Caps keeping reserve share r of the straight-line acceleration and jerk for speed changes. */
 static void caps_with_reserve(const tp_bounds_t *b, const tp_axlim_t *l, double v_need, int with_jerk,
                               double r, tp_caps_t *out)
@@ -115,17 +146,9 @@ static void caps_with_reserve(const tp_bounds_t *b, const tp_axlim_t *l, double 
             if (l->acc[i] > 0.0 && b->d2[i] > TP_CAPS_TINY)
                 v = fmin(v, sqrt(fmax(0.0, l->acc[i] - a_keep * b->d1[i]) / b->d2[i]));
     } else if (usable_acc(b, l, v_hi, with_jerk, j_keep) < a_keep) {
-        /* geometric bisection: the answer may lie many decades below v_hi; a cap is never zero
-         * (a region that may not be crossed would stall the executor) */
-        double lo = v_hi * TP_CAPS_V_FLOOR, hi = v_hi;
-        for (int k = 0; k < TP_CAPS_ITER; k++) {
-            double mid = sqrt(lo * hi);
-            if (usable_acc(b, l, mid, with_jerk, j_keep) >= a_keep)
-                lo = mid;
-            else
-                hi = mid;
-        }
-        v = lo;
+        /* a cap is never zero: a region that may not be crossed would stall the executor */
+        double root = speed_keeping(b, l, with_jerk, a_keep, j_keep) * TP_CAPS_ROOT_MARGIN;
+        v = fmin(v_hi, fmax(root, v_hi * TP_CAPS_V_FLOOR));
     }
     caps_at_speed(b, l, v, with_jerk, r, out);
 }

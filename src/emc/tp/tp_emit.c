@@ -208,6 +208,10 @@ void tp_emit_blend(tp_planner_t *tp, tp_seg_t *a, tp_seg_t *a_owner, tp_seg_t *b
     tp_region_t r[TP_BLEND_PIECES];
     double len = a->blend.len, u[TP_BLEND_PIECES + 1], j = INFINITY;
     lim_min(&lim, &a->lim, &b->lim);
+    /* the moves' path acceleration and jerk bound speed changes along them; through the corner
+     * every axis keeps its own limits, which is what the curve turning between them must obey */
+    lim.acc[TP_PATH_AX] = 0.0;
+    lim.jerk[TP_PATH_AX] = 0.0;
     for (int k = 0; k <= TP_BLEND_PIECES; k++)
         u[k] = k == TP_BLEND_PIECES ? len : len * k / TP_BLEND_PIECES;
     for (int k = 0; k < TP_BLEND_PIECES; k++) {

@@ -180,15 +180,23 @@ static void go_profile(tp_prof_t *go, double v, double a, const tp_stretch_t *st
     double j = st->lim.jerk;
     if (!(j > 0.0) || !(st->jerk_own > j))
         return;
+    tp_lim1_t own = {st->lim.acc, st->jerk_own};
+    tp_prof_t settle;
+    double v_own = v + a * fabs(a) / (2.0 * st->jerk_own);
+    /* braking: settle the deceleration with the own (larger) jerk, the quickest way back to speed */
+    if (a < 0.0 && v_own >= 0.0) {
+        tp_prof_velocity(&settle, v, a, v_own, &own);
+        if (settle.n > 0 && settle.ph[0].j > 0.0)
+            *go = settle;
+        return;
+    }
     double v_rest = v + a * fabs(a) / (2.0 * j);
     if ((a > 0.0 && v_rest > st->v * (1.0 + 1e-6)) || (a < 0.0 && v_rest < 0.0)) {
-        tp_lim1_t own = {st->lim.acc, st->jerk_own};
-        tp_prof_t settle;
         tp_prof_velocity(&settle, v, a, st->v, &own);
         /* only to settle (bring the acceleration towards zero first), never to push harder: when
          * the own profile would push first, just settle with the own jerk and go on next cycle */
         if (!(settle.n > 0 && settle.ph[0].j * a < 0.0))
-            tp_prof_velocity(&settle, v, a, v + a * fabs(a) / (2.0 * st->jerk_own), &own);
+            tp_prof_velocity(&settle, v, a, v_own, &own);
         if (settle.n > 0 && settle.ph[0].j * a < 0.0)
             *go = settle;
     }

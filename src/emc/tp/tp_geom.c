@@ -321,17 +321,28 @@ static void bez_restrict(const tp_vec_t *c, int n, double u0, double u1, const i
     out[0] = tmp[0];
 }
 
-/* Largest |component| and metric norm over a polygon, scaled. */
-static void poly_max(const tp_vec_t *c, int n, double scale, tp_metric_t m, double *out)
+/* Largest |component| (of the nax axes listed in ax; the others are zero) and metric norm over a
+ * polygon, scaled. */
+static void poly_max(const tp_vec_t *c, int n, double scale, tp_metric_t m, const int *ax, int nax,
+                     double *out)
 {
     int first = tp_metric_first(m);
+    double norm = 0.0;
     for (int i = 0; i < TP_NBOUND; i++)
         out[i] = 0.0;
     for (int k = 0; k <= n; k++) {
-        for (int i = 0; i < TP_NAX; i++)
-            out[i] = fmax(out[i], fabs(c[k].x[i]) * scale);
-        out[TP_PATH_AX] = fmax(out[TP_PATH_AX], tp_vec_norm3(&c[k], first) * scale);
+        for (int q = 0; q < nax; q++) {
+            double v = fabs(c[k].x[ax[q]]);
+            if (v > out[ax[q]])
+                out[ax[q]] = v;
+        }
+        double nk = tp_vec_norm3(&c[k], first);
+        if (nk > norm)
+            norm = nk;
     }
+    for (int q = 0; q < nax; q++)
+        out[ax[q]] *= scale;
+    out[TP_PATH_AX] = norm * scale;
 }
 
 /* Quintic bounds over [s0, s1] from the restricted derivative polygons (convex hull); axes that
@@ -352,11 +363,11 @@ static void quintic_bounds(const tp_geo_t *g, double s0, double s1, tp_bounds_t 
     bez_diff(d1, 4, d2);
     bez_diff(d2, 3, d3);
     bez_restrict(d1, 4, u0, u1, ax, nax, r);
-    poly_max(r, 4, 1.0 / L, g->metric, b->d1);
+    poly_max(r, 4, 1.0 / L, g->metric, ax, nax, b->d1);
     bez_restrict(d2, 3, u0, u1, ax, nax, r);
-    poly_max(r, 3, 1.0 / (L * L), g->metric, b->d2);
+    poly_max(r, 3, 1.0 / (L * L), g->metric, ax, nax, b->d2);
     bez_restrict(d3, 2, u0, u1, ax, nax, r);
-    poly_max(r, 2, 1.0 / (L * L * L), g->metric, b->d3);
+    poly_max(r, 2, 1.0 / (L * L * L), g->metric, ax, nax, b->d3);
 }
 
 /* Derivative bounds over [s0, s1]. */

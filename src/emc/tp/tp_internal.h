@@ -36,6 +36,7 @@ typedef struct tp_want {
     double acc, jerk;           /* limits the cut is sized for (jerk 0: trapezoid) */
     double cap;                 /* most the tolerance allows (INFINITY: none) */
     double v_need;              /* speed wanted through the corner */
+    tp_blend_shape_t shape;
 } tp_want_t;
 
 /* One queued move and its junction bookkeeping. */

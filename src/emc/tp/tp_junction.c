@@ -11,8 +11,6 @@
 #define TP_KINK_SMOOTH 1e-9
 /* Share of the tolerance the blend sizing aims at; the rest covers estimate errors. */
 #define TP_TOL_SHARE 0.95
-/* G64 without P: the corner deviation the blend is sized for, as a share of the shorter move. */
-#define TP_NO_TOL_SHARE 0.25
 #define TP_BLEND_TRIES 4
 /* Turns above this (rad) are corners: blends on both sides of a move meet without curvature. */
 #define TP_TILE_MAX_TURN 0.35
@@ -22,6 +20,8 @@
 #define TP_WANT_JERK_SHARE 0.4
 /* Longest cut on one side of a blend, in cuts of the other side. */
 #define TP_BLEND_SKEW 1.4
+/* Without G64 P a blend misses its corner by at most this share of the shorter adjacent move. */
+#define TP_FREE_DEV_SHARE 0.25
 /* Bisection steps for the common speed of two blends sharing a short move. */
 #define TP_SPLIT_ITER 30
 
@@ -47,19 +47,36 @@ static tp_jct_t classify(tp_planner_t *tp, tp_seg_t *a, tp_seg_t *b, tp_corner_t
     return TP_JCT_BLEND;
 }
 
-/* Tolerance left to a blend between units a and b after their lines' own deviation. */
-static double blend_tol(const tp_seg_t *a, const tp_seg_t *b)
+/* Tolerance left to a blend between units a and b after their lines' own deviation.  Without
+ * G64 P the geometry bounds it, as in LinuxCNC: a share of the shorter adjacent move. */
+static double blend_tol(tp_planner_t *tp, const tp_seg_t *a, const tp_seg_t *b)
 {
-    if (!(a->tol > 0.0))
-        return 0.0;
-    return a->tol - fmax(a->unit_dev, b->unit_dev);
+    double dev = fmax(a->unit_dev, b->unit_dev);
+    if (a->tol > 0.0)
+        return a->tol - dev;
+    const tp_seg_t *last = tp_unit_last(tp, a);
+    double free = TP_FREE_DEV_SHARE * fmin(last->own1 - last->own0, b->own1 - b->own0);
+    return fmax(free - dev, 0.5 * free);
 }
 
 /* Cut a blend described by w wants for speed v through its corner. */
 static double want_at(const tp_want_t *w, double v)
 {
-    tp_corner_t c = {NULL, NULL, w->theta, w->kink};
+    tp_corner_t c = {NULL, NULL, w->theta, w->kink, w->shape};
     return fmin(w->cap, TP_WANT_MARGIN * tp_blend_need_cut(&c, v, w->acc, w->jerk));
+}
+
+/* Shape of a blend: G2 where jerk is limited or where the tolerance lets a G2 blend pass at the
+ * speed wanted; otherwise (trapezoid planning, a corner the tolerance slows down) the parabolic G1
+ * blend, which turns with the least acceleration a cut of that size allows. */
+static void choose_shape(const tp_planner_t *tp, const tp_corner_t *c, tp_want_t *w, double tol)
+{
+    if (tp->type == TP_PLANNER_SCURVE || want_at(w, w->v_need) < w->cap)
+        return;
+    tp_corner_t g1 = *c;
+    g1.shape = TP_BLEND_G1;
+    w->shape = TP_BLEND_G1;
+    w->cap = tp_blend_tol_cut(&g1, TP_TOL_SHARE * tol);
 }
 
 /* Symmetric cut a blend between a and b wants: enough for the requested speed, within the tolerance. */
@@ -82,19 +99,15 @@ static double blend_want(tp_planner_t *tp, tp_seg_t *a, tp_seg_t *b, const tp_co
         if (jerk > 0.0 && a->lim.jerk[i] > 0.0)
             jerk = fmin(jerk, a->lim.jerk[i]);
     }
-    double tol = blend_tol(a, b);
+    double tol = blend_tol(tp, a, b);
     w->theta = c->theta;
     w->kink = c->kink;
+    w->shape = c->shape;
     w->acc = TP_WANT_ACC_SHARE * acc;
     w->jerk = jerk > 0.0 ? TP_WANT_JERK_SHARE * jerk : 0.0;
-    /* G64 without P still sizes the blend so the path passes within a quarter of the shorter
-     * move of the corner (as LinuxCNC): a sharp corner between long moves is not cut across
-     * half their length */
-    int lines = a->in.kind == TP_SEG_LINE && b->in.kind == TP_SEG_LINE;
-    double size_tol = tol > 0.0 ? TP_TOL_SHARE * tol
-                      : a->tol > 0.0 || !lines ? 0.0 : TP_NO_TOL_SHARE * fmin(a->geo.len, b->geo.len);
-    w->cap = size_tol > 0.0 ? tp_blend_tol_cut(c, size_tol) : INFINITY;
+    w->cap = tp_blend_tol_cut(c, TP_TOL_SHARE * tol);
     w->v_need = v_need;
+    choose_shape(tp, c, w, tol);
     return want_at(w, v_need);
 }
 
@@ -158,7 +171,8 @@ static tp_vec_t vertex_curvature(const tp_seg_t *a, const tp_seg_t *b)
 static void tile_curvature(tp_seg_t *a, tp_seg_t *b, tp_seg_t *c)
 {
     b->k_in_set = b->k_out_set = 0;
-    if (!b->tiled || b->geo.kind != TP_GEO_LINE || !a || !c)
+    if (!b->tiled || b->geo.kind != TP_GEO_LINE || !a || !c || b->wf_in.shape != TP_BLEND_G2 ||
+        b->wf_out.shape != TP_BLEND_G2)
         return;
     const tp_vec_t *u = &b->geo.u.line.dir;
     double uu = tp_vec_dot(u, u);
@@ -186,8 +200,9 @@ static int build_blend(tp_planner_t *tp, tp_seg_t *a, tp_seg_t *b, int a_free, d
 {
     tp_corner_t c;
     tp_blend_spec_t spec;
-    double tol = blend_tol(a, b);
+    double tol = blend_tol(tp, a, b);
     tp_corner_describe(&c, &a->geo, &b->geo);
+    c.shape = a->wf_out.shape;
     memset(&spec, 0, sizeof(spec));
     spec.da = a->cut_out;
     spec.db = b->cut_in;
@@ -195,7 +210,6 @@ static int build_blend(tp_planner_t *tp, tp_seg_t *a, tp_seg_t *b, int a_free, d
     spec.ka = a->k_out;
     spec.kb_set = b->k_in_set;
     spec.kb = b->k_in;
-    (void)tp;
     /* a lopsided blend turns mostly near its short side and is slow over all its length */
     if (a_free && !spec.ka_set && spec.da > TP_BLEND_SKEW * spec.db)
         spec.da = TP_BLEND_SKEW * spec.db;
@@ -204,7 +218,7 @@ static int build_blend(tp_planner_t *tp, tp_seg_t *a, tp_seg_t *b, int a_free, d
     for (int k = 0; k < TP_BLEND_TRIES; k++) {
         if (tp_blend_build(&a->blend, &c, &spec) < 0)
             return -1;
-        double worst = tol > 0.0 ? tp_blend_worst(&a->blend, &c, &spec, tol) : 0.0;
+        double worst = tp_blend_worst(&a->blend, &c, &spec, tol);
         if (worst <= tol)
             break;
         if (k == TP_BLEND_TRIES - 1)

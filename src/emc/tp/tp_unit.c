@@ -15,6 +15,15 @@ tp_seg_t *tp_unit_head(tp_planner_t *tp, const tp_seg_t *s)
     return tp_seg_at(tp, s->unit);
 }
 
+/* The same requested speed.  Canon turns a feed above the machine's into the machine speed along
+ * each move, which differs with the direction: such moves all ask for the most the machine allows. */
+static int same_feed(const tp_segment_t *a, const tp_segment_t *b)
+{
+    int a_max = a->ini_maxvel > 0.0 && a->vel >= a->ini_maxvel;
+    int b_max = b->ini_maxvel > 0.0 && b->vel >= b->ini_maxvel;
+    return a->vel == b->vel || (a_max && b_max);
+}
+
 /* Moves that may share a unit: plain blended feed lines with the same settings. */
 static int same_kind(const tp_seg_t *h, const tp_seg_t *s)
 {
@@ -24,7 +33,7 @@ static int same_kind(const tp_seg_t *h, const tp_seg_t *s)
     if (a->kind != TP_SEG_LINE || b->kind != TP_SEG_LINE || b->motion_type != TP_MOTION_FEED ||
         a->motion_type != TP_MOTION_FEED)
         return 0;
-    if (a->vel != b->vel || a->jerk != b->jerk || a->enables != b->enables)
+    if (!same_feed(a, b) || a->enables != b->enables)
         return 0;
     if (b->atspeed || b->indexer_jnum >= 0 || a->indexer_jnum >= 0)
         return 0;
@@ -80,6 +89,14 @@ int tp_unit_can_absorb(tp_planner_t *tp, tp_seg_t *h, const tp_seg_t *s)
     return 1;
 }
 
+/* The tighter of two limits, 0 meaning none. */
+static double tighter(double a, double b)
+{
+    if (!(b > 0.0))
+        return a;
+    return a > 0.0 ? fmin(a, b) : b;
+}
+
 /* Merge s into the unit of h: the unit becomes the line from h's start to s's end; each move owns
  * the stretch between the projections of its end points. */
 void tp_unit_absorb(tp_planner_t *tp, tp_seg_t *h, tp_seg_t *s)
@@ -88,12 +105,12 @@ void tp_unit_absorb(tp_planner_t *tp, tp_seg_t *h, tp_seg_t *s)
     s->unit = h->serial;
     h->unit_last = s->serial;
     tp_geo_line(&h->geo, &start, &end);
-    /* the unit keeps the tighter machine speed and acceleration of its moves */
+    /* the unit keeps the tighter machine speed, acceleration and jerk of its moves (canon gives
+     * each move the limits along its own direction) */
     for (int i = 0; i < TP_NBOUND; i++) {
-        if (s->lim.vel[i] > 0.0)
-            h->lim.vel[i] = h->lim.vel[i] > 0.0 ? fmin(h->lim.vel[i], s->lim.vel[i]) : s->lim.vel[i];
-        if (s->lim.acc[i] > 0.0)
-            h->lim.acc[i] = h->lim.acc[i] > 0.0 ? fmin(h->lim.acc[i], s->lim.acc[i]) : s->lim.acc[i];
+        h->lim.vel[i] = tighter(h->lim.vel[i], s->lim.vel[i]);
+        h->lim.acc[i] = tighter(h->lim.acc[i], s->lim.acc[i]);
+        h->lim.jerk[i] = tighter(h->lim.jerk[i], s->lim.jerk[i]);
     }
     const tp_vec_t *d = &h->geo.u.line.dir;
     double dd = tp_vec_dot(d, d), prev = 0.0, dev = 0.0;

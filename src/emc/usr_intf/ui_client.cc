@@ -1,6 +1,7 @@
 // ui_client.cc: attaching emcCommand/emcStatus/emcError as "xemc", polling status, writing commands and waiting for task's echo.
 #include "ui_client.hh"
 
+#include <signal.h>
 #include <time.h>
 
 #include <algorithm>
@@ -26,6 +27,18 @@ double ui_now_s()
     struct timespec ts;
     clock_gettime(CLOCK_MONOTONIC, &ts);
     return ts.tv_sec + ts.tv_nsec * 1e-9;
+}
+
+// The signals that end a user interface's loop.
+void ui_install_stop_signals(void (*handler)(int))
+{
+    struct sigaction sa;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = handler;
+    sigemptyset(&sa.sa_mask);
+    sigaction(SIGTERM, &sa, nullptr);
+    sigaction(SIGINT, &sa, nullptr);
+    sigaction(SIGHUP, &sa, nullptr);
 }
 
 UiClient::UiClient(std::string nml_file) : nml_file_(std::move(nml_file)), status_(new EMC_STAT) {}

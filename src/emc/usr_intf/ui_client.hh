@@ -78,5 +78,7 @@ private:
 int32_t ui_serial_diff(int32_t a, int32_t b);
 // Monotonic clock in seconds.
 double ui_now_s();
+// SIGTERM, SIGINT and SIGHUP call handler (no SA_RESTART, so a sleep they interrupt ends early).
+void ui_install_stop_signals(void (*handler)(int));
 
 #endif

@@ -155,7 +155,11 @@ typedef struct {
     cl_symbol_t *symbols;
 } cl_mem_t;
 
+/* Largest element count of any array (far above every module parameter's maximum). */
+#define CL_MAX_ARRAY_SIZE 1000000
+
 size_t cl_layout(cl_header_t *hdr, const int32_t sizes[CL_N_SIZES]);
+int cl_layout_valid(const cl_header_t *hdr);
 void cl_map(cl_mem_t *m, void *base);
 void cl_clear_program(cl_mem_t *m);
 void cl_clear_state(cl_mem_t *m);

@@ -27,6 +27,20 @@ size_t cl_layout(cl_header_t *hdr, const int32_t sizes[CL_N_SIZES])
     return pos;
 }
 
+/* True when hdr's offsets and total size are the layout of its sizes (a header read from shared
+   memory is checked before its offsets are used to write anywhere). */
+int cl_layout_valid(const cl_header_t *hdr)
+{
+    cl_header_t expect;
+
+    for (int i = 0; i < CL_N_SIZES; i++)
+        if (hdr->sizes[i] < 0 || hdr->sizes[i] > CL_MAX_ARRAY_SIZE)
+            return 0;
+    cl_layout(&expect, hdr->sizes);
+    return expect.total_size == hdr->total_size &&
+           memcmp(expect.offsets, hdr->offsets, sizeof(expect.offsets)) == 0;
+}
+
 /* Point m's arrays into the segment at base, whose header is already laid out. */
 void cl_map(cl_mem_t *m, void *base)
 {

@@ -1,4 +1,5 @@
 /* classicladder.c: loads a .clp project into the running classicladder_rt module. */
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -12,6 +13,7 @@
 /* Attachment to the module's data segment. */
 typedef struct {
     int module_id, shm_id;
+    cl_header_t layout;     /* the header as checked when attaching */
     cl_mem_t mem;
 } cl_link_t;
 
@@ -31,7 +33,6 @@ static int usage(FILE *out, int status)
 static int attach(cl_link_t *k)
 {
     void *base;
-    uint64_t total;
 
     k->module_id = rtapi_init("classicladder");
     if (k->module_id < 0) {
@@ -39,19 +40,26 @@ static int attach(cl_link_t *k)
         return -1;
     }
     k->shm_id = rtapi_shmem_new(CL_SHM_KEY, k->module_id, sizeof(cl_header_t));
-    if (k->shm_id >= 0)
-        rtapi_shmem_getptr(k->shm_id, &base);
-    if (k->shm_id < 0 || ((cl_header_t *)base)->magic != CL_MAGIC ||
-        ((cl_header_t *)base)->version != CL_LAYOUT_VERSION) {
+    if (k->shm_id >= 0 && rtapi_shmem_getptr(k->shm_id, &base) == 0)
+        memcpy(&k->layout, base, sizeof(k->layout));
+    if (k->shm_id < 0 || k->layout.magic != CL_MAGIC || k->layout.version != CL_LAYOUT_VERSION) {
         fprintf(stderr, "classicladder: the realtime module classicladder_rt is not loaded "
                         "(use 'loadrt classicladder_rt' first)\n");
         return -1;
     }
-    total = ((cl_header_t *)base)->total_size;
+    if (!cl_layout_valid(&k->layout)) {
+        fprintf(stderr, "classicladder: the PLC data segment is damaged (its layout does not "
+                        "match its sizes); reload classicladder_rt\n");
+        return -1;
+    }
     rtapi_shmem_delete(k->shm_id, k->module_id);
-    k->shm_id = rtapi_shmem_new(CL_SHM_KEY, k->module_id, total);
+    k->shm_id = rtapi_shmem_new(CL_SHM_KEY, k->module_id, k->layout.total_size);
     if (k->shm_id < 0 || rtapi_shmem_getptr(k->shm_id, &base) < 0) {
         fprintf(stderr, "classicladder: cannot map the PLC data segment (%d)\n", k->shm_id);
+        return -1;
+    }
+    if (memcmp(base, &k->layout, offsetof(cl_header_t, loading)) != 0) {
+        fprintf(stderr, "classicladder: classicladder_rt was reloaded while attaching; try again\n");
         return -1;
     }
     cl_map(&k->mem, base);
@@ -95,14 +103,14 @@ static int load_project(cl_link_t *k, const char *path)
 {
     char err[CL_ERR_LEN];
     cl_mem_t image;
-    void *buf = calloc(1, k->mem.hdr->total_size);
+    void *buf = calloc(1, k->layout.total_size);
     int rc = -1;
 
     if (!buf) {
         fprintf(stderr, "classicladder: out of memory\n");
         return -1;
     }
-    memcpy(buf, k->mem.hdr, sizeof(cl_header_t));
+    memcpy(buf, &k->layout, sizeof(cl_header_t));
     cl_map(&image, buf);
     if (cl_project_load(&image, path, err, sizeof(err)) < 0)
         fprintf(stderr, "classicladder: %s\n", err);
@@ -122,7 +130,7 @@ static int is_modbus_option(const char *arg)
 /* classicladder [--nogui] [--modmaster] FILE.clp */
 int main(int argc, char **argv)
 {
-    cl_link_t link = { -1, -1, { 0 } };
+    cl_link_t link = { .module_id = -1, .shm_id = -1 };
     const char *path = NULL;
     int gui = 1, rc;
 

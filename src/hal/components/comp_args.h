@@ -118,6 +118,29 @@ static inline void comp_value_convert(comp_value_t *dst, char to, const comp_val
     }
 }
 
+/* Debounce of a selection (mux_generic, demux_generic): microseconds a new one has waited and
+   the one in effect. */
+typedef struct {
+    hal_u32_t elapsed;
+    hal_u32_t selected;
+} comp_debounce_t;
+
+/* True when sel takes effect this call: unchanged, or waited debounce_us (counted in period
+   steps); a zero selection with suppress set changes nothing. */
+static inline int comp_select_settle(comp_debounce_t *d, unsigned sel, int suppress,
+                                     hal_u32_t debounce_us, long period)
+{
+    if (suppress && sel == 0)
+        return 0;
+    if (sel != d->selected && d->elapsed < debounce_us) {
+        d->elapsed += (hal_u32_t)(period / 1000);
+        return 0;
+    }
+    d->selected = sel;
+    d->elapsed = 0;
+    return 1;
+}
+
 /* Selected index: sel-int plus the weighted sel-bit pins. */
 static inline unsigned comp_select_read(const comp_select_t *s)
 {

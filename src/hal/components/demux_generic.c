@@ -23,8 +23,7 @@ typedef struct {
     hal_u32_t *debounce_us;
     comp_value_t *in;
     comp_value_t **out;
-    hal_u32_t elapsed;  /* microseconds the new selection has been waiting */
-    hal_u32_t selected; /* selection in effect */
+    comp_debounce_t debounce;
 } demux_t;
 
 /* Funct of one demultiplexer: debounce the selection; the selected output follows the input, the others are 0. */
@@ -33,14 +32,8 @@ static void demux_funct(void *arg, long period)
     demux_t *m = arg;
     unsigned sel = comp_select_read(&m->sel);
     static const comp_value_t zero;
-    if (*m->suppress && sel == 0)
+    if (!comp_select_settle(&m->debounce, sel, *m->suppress, *m->debounce_us, period))
         return;
-    if (sel != m->selected && m->elapsed < *m->debounce_us) {
-        m->elapsed += (hal_u32_t)(period / 1000);
-        return;
-    }
-    m->selected = sel;
-    m->elapsed = 0;
     for (int i = 0; i < m->sel.size; i++) {
         if ((unsigned)i == sel)
             comp_value_convert(m->out[i], m->sel.out_type, m->in, m->sel.in_type);
@@ -58,8 +51,8 @@ static int demux_control(int comp_id, demux_t *m, int n)
     r = comp_select_pins(&m->sel, comp_id, name);
     if (r == 0) r = hal_pin_bit_newf(HAL_IN, &m->suppress, comp_id, "demux-gen.%02d.suppress-no-input", n);
     if (r == 0) r = hal_pin_u32_newf(HAL_IN, &m->debounce_us, comp_id, "demux-gen.%02d.debounce-us", n);
-    if (r == 0) r = hal_param_u32_newf(HAL_RO, &m->elapsed, comp_id, "demux-gen.%02d.elapsed", n);
-    if (r == 0) r = hal_param_u32_newf(HAL_RO, &m->selected, comp_id, "demux-gen.%02d.selected", n);
+    if (r == 0) r = hal_param_u32_newf(HAL_RO, &m->debounce.elapsed, comp_id, "demux-gen.%02d.elapsed", n);
+    if (r == 0) r = hal_param_u32_newf(HAL_RO, &m->debounce.selected, comp_id, "demux-gen.%02d.selected", n);
     if (r == 0) {
         rtapi_snprintf(name, sizeof(name), "demux-gen.%02d.in-%s", n, comp_type_word(m->sel.in_type));
         r = comp_typed_pin(comp_id, m->sel.in_type, HAL_IN, (void **)&m->in, name);

@@ -23,8 +23,7 @@ typedef struct {
     hal_u32_t *debounce_us;
     comp_value_t **in;
     comp_value_t *out;
-    hal_u32_t elapsed;  /* microseconds the new selection has been waiting */
-    hal_u32_t selected; /* selection in effect */
+    comp_debounce_t debounce;
 } muxg_t;
 
 /* Funct of one multiplexer: debounce the selection, then copy the chosen input to out. */
@@ -32,14 +31,8 @@ static void muxg_funct(void *arg, long period)
 {
     muxg_t *m = arg;
     unsigned sel = comp_select_read(&m->sel);
-    if (*m->suppress && sel == 0)
+    if (!comp_select_settle(&m->debounce, sel, *m->suppress, *m->debounce_us, period))
         return;
-    if (sel != m->selected && m->elapsed < *m->debounce_us) {
-        m->elapsed += (hal_u32_t)(period / 1000);
-        return;
-    }
-    m->selected = sel;
-    m->elapsed = 0;
     if (sel >= (unsigned)m->sel.size)
         sel = m->sel.size - 1;
     comp_value_convert(m->out, m->sel.out_type, m->in[sel], m->sel.in_type);
@@ -54,8 +47,8 @@ static int muxg_control(int comp_id, muxg_t *m, int n)
     r = comp_select_pins(&m->sel, comp_id, name);
     if (r == 0) r = hal_pin_bit_newf(HAL_IN, &m->suppress, comp_id, "mux-gen.%02d.suppress-no-input", n);
     if (r == 0) r = hal_pin_u32_newf(HAL_IN, &m->debounce_us, comp_id, "mux-gen.%02d.debounce-us", n);
-    if (r == 0) r = hal_param_u32_newf(HAL_RO, &m->elapsed, comp_id, "mux-gen.%02d.elapsed", n);
-    if (r == 0) r = hal_param_u32_newf(HAL_RO, &m->selected, comp_id, "mux-gen.%02d.selected", n);
+    if (r == 0) r = hal_param_u32_newf(HAL_RO, &m->debounce.elapsed, comp_id, "mux-gen.%02d.elapsed", n);
+    if (r == 0) r = hal_param_u32_newf(HAL_RO, &m->debounce.selected, comp_id, "mux-gen.%02d.selected", n);
     if (r == 0) r = hal_export_funct(name, muxg_funct, m, 1, 0, comp_id);
     return r;
 }

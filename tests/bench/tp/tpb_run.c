@@ -53,12 +53,16 @@ void tpb_segment(const tpb_program_t *p, const tpb_machine_t *mc, int k, const d
             u[i] = d[i] / len;
         s->ini_maxvel = along(u, mc->vel, mc->vtraj);
         s->acc = along(u, mc->acc, 1e9);
+        /* canon's jerk along a line: the per-axis limits projected, no path cap */
+        const double jerk3[3] = {mc->jerk, mc->jerk, mc->jerk};
+        s->jerk = mc->jerk > 0.0 ? along(u, jerk3, 1e18) : 0.0;
     }
     if (m->feed >= 1e8) {       /* a rapid: the machine velocity along the move */
         s->motion_type = TP_MOTION_TRAVERSE;
         s->vel = s->ini_maxvel;
     }
-    s->jerk = mc->jerk;
+    if (m->arc)
+        s->jerk = mc->jerk;
     s->enables = TP_ENABLE_FS | TP_ENABLE_FH;
     s->indexer_jnum = -1;
     s->id = m->line;

@@ -14,5 +14,5 @@ echo "== linuxcnc_check_ini: warnings alone pass, -e makes them fatal"
 linuxcnc_check_ini warn-only.ini 2>&1 | sed -e "s|$PWD/||g"; echo "exit status ${PIPESTATUS[0]}"
 linuxcnc_check_ini -e warn-only.ini > /dev/null 2>&1; echo "-e exit status $?"
 echo "== OPENEMC_INSTANCE out of range"
-OPENEMC_INSTANCE=300 linuxcnc -r ../startup-order/test.ini > run.out 2> run.err
+OPENEMC_INSTANCE=16777216 linuxcnc -r ../startup-order/test.ini > run.out 2> run.err
 echo "exit status $?"; cat run.err

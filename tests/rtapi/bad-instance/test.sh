@@ -1,7 +1,7 @@
 #!/bin/bash
-# bad-instance: OPENEMC_INSTANCE outside 0..255 (or not a number) is refused by every entry
-# point instead of folding onto another session; 255 and 007 are accepted.
-for value in 5110 256 -1 abc 1e3 " 7"; do
+# bad-instance: OPENEMC_INSTANCE outside 0..16777215 (or not a number) is refused by every entry
+# point instead of folding onto another session; 255, 256, 5110 and 007 are accepted.
+for value in 16777216 123456789 -1 abc 1e3 " 7"; do
     echo "> OPENEMC_INSTANCE='$value'"
     OPENEMC_INSTANCE=$value realtime start 2>&1; echo "realtime start -> $?"
     OPENEMC_INSTANCE=$value realtime status 2>&1; echo "realtime status -> $?"
@@ -10,6 +10,6 @@ for value in 5110 256 -1 abc 1e3 " 7"; do
     OPENEMC_INSTANCE=$value python3 -c 'import hal; hal.component("x")' 2>&1 | tail -1
 done
 echo "> accepted values (no complaint; whether a master runs there does not matter)"
-for value in 255 007 ""; do
+for value in 255 256 5110 16777215 007 ""; do
     echo "'$value': $(OPENEMC_INSTANCE=$value realtime status 2>&1 | grep -c 'not an instance')"
 done

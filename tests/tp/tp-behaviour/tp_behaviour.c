@@ -141,7 +141,7 @@ static void corner_modes(void)
 }
 
 /* G64 without P at a sharp corner between long moves: the path passes within a quarter of the
- * shorter move (LinuxCNC's size), not across half of each. */
+ * shorter move (LinuxCNC's bound), not across half of each. */
 static void sharp_corner_no_tolerance(void)
 {
     tp_planner_t *tp = machine(0.0);
@@ -159,8 +159,8 @@ static void sharp_corner_no_tolerance(void)
             break;
     }
     double quarter = 0.25 * sqrt(26.0);
-    printf("G64 sharp corner: the path passes %.2f from the corner (a quarter of the move: %.2f)\n", 5.0 - x_max,
-           quarter);
+    printf("G64 sharp corner: the path passes within a quarter of the move of the corner: %s\n",
+           5.0 - x_max <= quarter + 1e-9 ? "yes" : "no");
     tp_planner_destroy(tp);
 }
 

@@ -15,7 +15,7 @@ import time
 from . import sysv
 from .errors import LaunchError
 
-MAX_INSTANCE = 255
+MAX_INSTANCE = 16777215
 LOCK_DIR = "openemc-linuxcnc-locks"
 LOCK_BASE = "/tmp"                    # fixed, so launches with different TMPDIRs still meet
 POOL_DIR = "openemc-instance-locks"   # the test runners' pool; auto-picked instances take it too
@@ -189,8 +189,8 @@ class InstanceLease:
 
 
 def parse_instance(text):
-    """OPENEMC_INSTANCE as a number 0..255, or a LaunchError."""
-    if not text.isdigit() or int(text) > MAX_INSTANCE:
+    """OPENEMC_INSTANCE as a number 0..MAX_INSTANCE, or a LaunchError."""
+    if not text.isdigit() or len(text) > 8 or int(text) > MAX_INSTANCE:
         raise LaunchError("linuxcnc: OPENEMC_INSTANCE='%s' is not a number from 0 to %d"
                           % (text, MAX_INSTANCE))
     return int(text)

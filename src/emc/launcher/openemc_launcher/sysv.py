@@ -3,7 +3,7 @@ import ctypes
 import os
 import re
 
-# Base keys of the segments a session may leave (each instance XORs its number << 24).
+# Base keys of the segments a session may leave (instance_key() gives each instance's own).
 HAL_KEYS = (0x48414C32, 0x90280A48, 0x48484C34)      # HAL, RTAPI, id counter
 OTHER_KEYS = (0x130CF406, 0x434C522B, 0x00544F4C)    # halscope, classicladder, tool data
 FIFO_NAME = re.compile(r"/\.rtapi_fifo(?:\.(\d+))?$")
@@ -11,8 +11,11 @@ IPC_RMID = 0
 
 
 def instance_key(base, instance):
-    """The key an instance uses for a base key."""
-    return (base ^ (instance << 24)) & 0xFFFFFFFF
+    """The key an instance uses for a base key: instances 0..255 XOR their number into the top
+    byte, larger ones XOR (number << 8 | 0xA5), as rtapi_instance_key() does."""
+    if instance <= 255:
+        return (base ^ (instance << 24)) & 0xFFFFFFFF
+    return (base ^ (instance << 8 | 0xA5)) & 0xFFFFFFFF
 
 
 def segments():

@@ -62,18 +62,6 @@ void pause_s(double seconds)
     nanosleep(&ts, nullptr);
 }
 
-// Signals end the loop; a sleep they interrupt ends early.
-void install_signals()
-{
-    struct sigaction sa;
-    memset(&sa, 0, sizeof sa);
-    sa.sa_handler = on_signal;
-    sigemptyset(&sa.sa_mask);
-    sigaction(SIGTERM, &sa, nullptr);
-    sigaction(SIGINT, &sa, nullptr);
-    sigaction(SIGHUP, &sa, nullptr);
-}
-
 // One scan of every pin and the status.
 void cycle(Halui &h)
 {
@@ -102,7 +90,7 @@ int main(int argc, char **argv)
     }
     HaluiConfig cfg;
     if (ini.empty() || !halui_read_config(ini, cfg)) return 1;
-    install_signals();
+    ui_install_stop_signals(on_signal);
     int comp_id = hal_init("halui");
     if (comp_id < 0) {
         fprintf(stderr, "halui: hal_init failed: %s (is realtime running?)\n", strerror(-comp_id));

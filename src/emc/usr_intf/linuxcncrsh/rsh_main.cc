@@ -119,19 +119,6 @@ bool read_ini(RshServer *&sv, const RshOptions &opt)
     return true;
 }
 
-// Signals end the server; a vanished client must not kill it (SIGPIPE).
-void install_signals()
-{
-    struct sigaction sa;
-    memset(&sa, 0, sizeof sa);
-    sa.sa_handler = on_signal;
-    sigemptyset(&sa.sa_mask);
-    sigaction(SIGTERM, &sa, nullptr);
-    sigaction(SIGINT, &sa, nullptr);
-    sigaction(SIGHUP, &sa, nullptr);
-    signal(SIGPIPE, SIG_IGN);
-}
-
 } // namespace
 
 // Parse the command line (LinuxCNC's options, then "-- -ini FILE").
@@ -168,7 +155,8 @@ int main(int argc, char **argv)
     RshServer *sv = nullptr;
     if (!read_ini(sv, opt)) return 1;
     std::unique_ptr<RshServer> server(sv);
-    install_signals();
+    ui_install_stop_signals(on_signal);
+    signal(SIGPIPE, SIG_IGN);   // a vanished client must not kill the server
     server->client.set_stop_flag(&stop_requested);
     if (rsh_listen(*server) != 0) return 1;
     return rsh_serve(*server, &stop_requested);
