@@ -18,8 +18,10 @@
 #define TP_WANT_MARGIN 2.5
 #define TP_WANT_ACC_SHARE 0.2
 #define TP_WANT_JERK_SHARE 0.2
-/* Longest cut on one side of a blend, in cuts of the other side. */
+/* Longest cut on one side of a blend, in cuts of the other side: S-curve, trapezoid (whose
+ * lopsided blends cost more than the length they gain). */
 #define TP_BLEND_SKEW 1.4
+#define TP_BLEND_SKEW_TRAP 1.0
 /* Without G64 P a blend misses its corner by at most this share of the shorter adjacent move. */
 #define TP_FREE_DEV_SHARE 0.25
 /* Bisection steps for the common speed of two blends sharing a short move. */
@@ -249,10 +251,11 @@ static int build_blend(tp_planner_t *tp, tp_seg_t *a, tp_seg_t *b, int a_free, d
     spec.kb_set = b->k_in_set;
     spec.kb = b->k_in;
     /* a lopsided blend turns mostly near its short side and is slow over all its length */
-    if (a_free && !spec.ka_set && spec.da > TP_BLEND_SKEW * spec.db)
-        spec.da = TP_BLEND_SKEW * spec.db;
-    if (!spec.kb_set && spec.db > TP_BLEND_SKEW * spec.da)
-        spec.db = TP_BLEND_SKEW * spec.da;
+    double skew = tp->type == TP_PLANNER_SCURVE ? TP_BLEND_SKEW : TP_BLEND_SKEW_TRAP;
+    if (a_free && !spec.ka_set && spec.da > skew * spec.db)
+        spec.da = skew * spec.db;
+    if (!spec.kb_set && spec.db > skew * spec.da)
+        spec.db = skew * spec.da;
     for (int k = 0; k < TP_BLEND_TRIES; k++) {
         if (tp_blend_build(&a->blend, &c, &spec) < 0)
             return -1;
