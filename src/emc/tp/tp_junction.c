@@ -24,6 +24,9 @@
 #define TP_BLEND_SKEW_TRAP 1.0
 /* Without G64 P a blend misses its corner by at most this share of the shorter adjacent move. */
 #define TP_FREE_DEV_SHARE 0.25
+/* Share of the limits a blend's speed is estimated with when weighed against a stop (what the caps
+ * leave after their reserve for speed changes). */
+#define TP_STOP_SHARE 0.75
 /* Bisection steps for the common speed of two blends sharing a short move. */
 #define TP_SPLIT_ITER 30
 
@@ -133,13 +136,16 @@ static int stop_is_faster(const tp_planner_t *tp, const tp_seg_t *a, const tp_se
     double acc = w->acc / TP_WANT_ACC_SHARE, jerk = w->jerk / TP_WANT_JERK_SHARE;
     double reach = 0.5 * fmin(a->geo.len, b->geo.len);
     double v_top = fmin(w->v_need, fmin(cbrt(reach * reach * jerk), sqrt(acc * reach)));
+    if (a->in.motion_type != TP_MOTION_TRAVERSE && b->in.motion_type != TP_MOTION_TRAVERSE)
+        v_top = fmin(v_top, fmin(a->in.vel, b->in.vel));    /* the feed, not its largest override */
     /* an arc on either side is no faster than its curvature allows */
     tp_jet_t ja = tp_geo_jet(&a->geo, a->geo.len), jb = tp_geo_jet(&b->geo, 0.0);
     double k = fmax(sqrt(tp_vec_dot(&ja.d2, &ja.d2)), sqrt(tp_vec_dot(&jb.d2, &jb.d2)));
     if (k > 0.0)
         v_top = fmin(v_top, fmin(sqrt(acc / k), cbrt(jerk / (k * k))));
     tp_corner_t c = {NULL, NULL, w->theta, w->kink, w->shape};
-    double len, v = fmin(tp_blend_speed_at_cut(&c, w->cap, w->acc, w->jerk, &len), v_top);
+    double len, v = tp_blend_speed_at_cut(&c, w->cap, TP_STOP_SHARE * acc, TP_STOP_SHARE * jerk, &len);
+    v = fmin(v, v_top);
     if (!(v_top > 0.0) || !isfinite(v_top) || !(v > 0.0))
         return 0;
     double lost_blend = change_time(v_top - v, acc, jerk) * (v_top - v) / v_top + len / v - len / v_top;
