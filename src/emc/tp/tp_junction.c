@@ -130,9 +130,10 @@ static double change_time(double dv, double acc, double jerk)
  * crossing the blend, against slowing to rest and back. */
 static int stop_is_faster(const tp_planner_t *tp, const tp_seg_t *a, const tp_seg_t *b, const tp_want_t *w)
 {
+    double d = fmin(w->cap, 0.5 * fmin(a->geo.len, b->geo.len));   /* short moves share their length */
     if (tp->type != TP_PLANNER_SCURVE || !(w->jerk > 0.0) || !(w->acc > 0.0) || w->theta < TP_TILE_MAX_TURN ||
-        want_at(w, w->v_need) < w->cap)
-        return 0;                       /* not held back by the tolerance */
+        want_at(w, w->v_need) < d)
+        return 0;                       /* not held back by the tolerance or short moves */
     double acc = w->acc / TP_WANT_ACC_SHARE, jerk = w->jerk / TP_WANT_JERK_SHARE;
     double reach = 0.5 * fmin(a->geo.len, b->geo.len);
     double v_top = fmin(w->v_need, fmin(cbrt(reach * reach * jerk), sqrt(acc * reach)));
@@ -144,7 +145,7 @@ static int stop_is_faster(const tp_planner_t *tp, const tp_seg_t *a, const tp_se
     if (k > 0.0)
         v_top = fmin(v_top, fmin(sqrt(acc / k), cbrt(jerk / (k * k))));
     tp_corner_t c = {NULL, NULL, w->theta, w->kink, w->shape};
-    double len, v = tp_blend_speed_at_cut(&c, w->cap, TP_STOP_SHARE * acc, TP_STOP_SHARE * jerk, &len);
+    double len, v = tp_blend_speed_at_cut(&c, d, TP_STOP_SHARE * acc, TP_STOP_SHARE * jerk, &len);
     v = fmin(v, v_top);
     if (!(v_top > 0.0) || !isfinite(v_top) || !(v > 0.0))
         return 0;
