@@ -10,6 +10,7 @@
 /* Per shape and unit cut of a line-line corner: vertex miss, largest |p''| and |p'''| along the
  * blend. */
 static double tab_miss[2][TP_BLEND_TABLE], tab_d2[2][TP_BLEND_TABLE], tab_d3[2][TP_BLEND_TABLE];
+static double tab_len[2][TP_BLEND_TABLE];
 static int tab_ready;
 
 /* Quintic with scale lam matching its own length (so length is the parameter). */
@@ -141,10 +142,12 @@ void tp_blend_init(void)
             if (bad < 0) {
                 tab_miss[shape][k] = 1.0;
                 tab_d2[shape][k] = tab_d3[shape][k] = 1e6;
+                tab_len[shape][k] = 2.0;
                 continue;
             }
             tp_vec_t origin = {{0}};
             tab_miss[shape][k] = quintic_miss(&g.u.q, &origin);
+            tab_len[shape][k] = g.len;
             unit_peaks(&g, &tab_d2[shape][k], &tab_d3[shape][k]);
         }
     tab_ready = 1;
@@ -205,6 +208,26 @@ double tp_blend_need_cut(const tp_corner_t *c, double v, double acc, double jerk
             d = fmax(d, 2.0 * v * v * v * c->kink / jerk);
     }
     return d;
+}
+
+/* Speed a symmetric blend of cut d allows with normal acceleration acc and jerk jerk (0 = none),
+ * the inverse of tp_blend_need_cut; *len is the blend's length (line-line estimate). */
+double tp_blend_speed_at_cut(const tp_corner_t *c, double d, double acc, double jerk, double *len)
+{
+    double d2 = tab_at(tab_d2[c->shape], c->theta), d3 = tab_at(tab_d3[c->shape], c->theta);
+    double v = INFINITY;
+    *len = d * tab_at(tab_len[c->shape], c->theta);
+    if (acc > 0.0 && d2 > 0.0)
+        v = fmin(v, sqrt(acc * d / d2));
+    if (jerk > 0.0 && d3 > 0.0)
+        v = fmin(v, cbrt(jerk * d * d / d3));
+    if (c->kink > 1e-12) {
+        if (acc > 0.0)
+            v = fmin(v, sqrt(acc * d / c->kink));
+        if (jerk > 0.0)
+            v = fmin(v, cbrt(jerk * d / (2.0 * c->kink)));
+    }
+    return v;
 }
 
 /* Build the blend from ga at (len - da) to gb at db. */

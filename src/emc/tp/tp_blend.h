@@ -35,6 +35,8 @@ void tp_corner_describe(tp_corner_t *c, const tp_geo_t *ga, const tp_geo_t *gb);
 double tp_blend_tol_cut(const tp_corner_t *c, double tol);
 /* Smallest symmetric cut whose blend allows speed v with normal acceleration acc and jerk jerk (0 = none). */
 double tp_blend_need_cut(const tp_corner_t *c, double v, double acc, double jerk);
+/* Speed a symmetric blend of cut d allows (the inverse of tp_blend_need_cut) and its length. */
+double tp_blend_speed_at_cut(const tp_corner_t *c, double d, double acc, double jerk, double *len);
 /* Build the blend; 0, or -1 when the geometry is degenerate. */
 int tp_blend_build(tp_geo_t *out, const tp_corner_t *c, const tp_blend_spec_t *spec);
 /* Distance from the corner point to the blend, and largest distance from the blend to the path. */

@@ -15,13 +15,18 @@
 /* Turns above this (rad) are corners: blends on both sides of a move meet without curvature. */
 #define TP_TILE_MAX_TURN 0.35
 /* Blends are sized for the wanted speed with this margin, using these shares of the limits. */
-#define TP_WANT_MARGIN 1.5
-#define TP_WANT_ACC_SHARE 0.35
-#define TP_WANT_JERK_SHARE 0.4
-/* Longest cut on one side of a blend, in cuts of the other side. */
+#define TP_WANT_MARGIN 2.5
+#define TP_WANT_ACC_SHARE 0.2
+#define TP_WANT_JERK_SHARE 0.2
+/* Longest cut on one side of a blend, in cuts of the other side: S-curve, trapezoid (whose
+ * lopsided blends cost more than the length they gain). */
 #define TP_BLEND_SKEW 1.4
+#define TP_BLEND_SKEW_TRAP 1.0
 /* Without G64 P a blend misses its corner by at most this share of the shorter adjacent move. */
 #define TP_FREE_DEV_SHARE 0.25
+/* Share of the limits a blend's speed is estimated with when weighed against a stop (what the caps
+ * leave after their reserve for speed changes). */
+#define TP_STOP_SHARE 0.75
 /* Bisection steps for the common speed of two blends sharing a short move. */
 #define TP_SPLIT_ITER 30
 
@@ -111,11 +116,53 @@ static double blend_want(tp_planner_t *tp, tp_seg_t *a, tp_seg_t *b, const tp_co
     return want_at(w, v_need);
 }
 
+/* Time a jerk-limited change of speed by dv takes with path acceleration acc and jerk jerk. */
+static double change_time(double dv, double acc, double jerk)
+{
+    if (dv * jerk <= acc * acc)
+        return 2.0 * sqrt(dv / jerk);
+    return dv / acc + acc / jerk;
+}
+
+/* S-curve: a blend the tolerance keeps small is run slowly over all its length; stopping at the
+ * corner (exact, within any tolerance) is then the faster way round.  Compares the time lost to
+ * cruising at the speed reachable on the shorter move: slowing to the blend's speed and back plus
+ * crossing the blend, against slowing to rest and back. */
+static int stop_is_faster(const tp_planner_t *tp, const tp_seg_t *a, const tp_seg_t *b, const tp_want_t *w)
+{
+    double d = fmin(w->cap, 0.5 * fmin(a->geo.len, b->geo.len));   /* short moves share their length */
+    if (tp->type != TP_PLANNER_SCURVE || !(w->jerk > 0.0) || !(w->acc > 0.0) || w->theta < TP_TILE_MAX_TURN ||
+        want_at(w, w->v_need) < d)
+        return 0;                       /* not held back by the tolerance or short moves */
+    double acc = w->acc / TP_WANT_ACC_SHARE, jerk = w->jerk / TP_WANT_JERK_SHARE;
+    double reach = 0.5 * fmin(a->geo.len, b->geo.len);
+    double v_top = fmin(w->v_need, fmin(cbrt(reach * reach * jerk), sqrt(acc * reach)));
+    if (a->in.motion_type != TP_MOTION_TRAVERSE && b->in.motion_type != TP_MOTION_TRAVERSE)
+        v_top = fmin(v_top, fmin(a->in.vel, b->in.vel));    /* the feed, not its largest override */
+    /* an arc on either side is no faster than its curvature allows */
+    tp_jet_t ja = tp_geo_jet(&a->geo, a->geo.len), jb = tp_geo_jet(&b->geo, 0.0);
+    double k = fmax(sqrt(tp_vec_dot(&ja.d2, &ja.d2)), sqrt(tp_vec_dot(&jb.d2, &jb.d2)));
+    if (k > 0.0)
+        v_top = fmin(v_top, fmin(sqrt(acc / k), cbrt(jerk / (k * k))));
+    tp_corner_t c = {NULL, NULL, w->theta, w->kink, w->shape};
+    double len, v = tp_blend_speed_at_cut(&c, d, TP_STOP_SHARE * acc, TP_STOP_SHARE * jerk, &len);
+    v = fmin(v, v_top);
+    if (!(v_top > 0.0) || !isfinite(v_top) || !(v > 0.0))
+        return 0;
+    double lost_blend = change_time(v_top - v, acc, jerk) * (v_top - v) / v_top + len / v - len / v_top;
+    return change_time(v_top, acc, jerk) < lost_blend;
+}
+
 /* Decide the junction between b (the last move) and c (just added) and what blend it wants. */
 void tp_jct_plan(tp_planner_t *tp, tp_seg_t *b, tp_seg_t *c)
 {
     tp_corner_t cr;
     b->jct_out = classify(tp, b, c, &cr);
+    if (b->jct_out == TP_JCT_BLEND) {
+        blend_want(tp, b, c, &cr, &b->wf_out);
+        if (stop_is_faster(tp, b, c, &b->wf_out))
+            b->jct_out = TP_JCT_STOP;
+    }
     c->jct_in = b->jct_out;
     b->want_out = c->want_in = b->jct_out == TP_JCT_BLEND ? blend_want(tp, b, c, &cr, &b->wf_out) : 0.0;
     c->wf_in = b->wf_out;
@@ -211,10 +258,11 @@ static int build_blend(tp_planner_t *tp, tp_seg_t *a, tp_seg_t *b, int a_free, d
     spec.kb_set = b->k_in_set;
     spec.kb = b->k_in;
     /* a lopsided blend turns mostly near its short side and is slow over all its length */
-    if (a_free && !spec.ka_set && spec.da > TP_BLEND_SKEW * spec.db)
-        spec.da = TP_BLEND_SKEW * spec.db;
-    if (!spec.kb_set && spec.db > TP_BLEND_SKEW * spec.da)
-        spec.db = TP_BLEND_SKEW * spec.da;
+    double skew = tp->type == TP_PLANNER_SCURVE ? TP_BLEND_SKEW : TP_BLEND_SKEW_TRAP;
+    if (a_free && !spec.ka_set && spec.da > skew * spec.db)
+        spec.da = skew * spec.db;
+    if (!spec.kb_set && spec.db > skew * spec.da)
+        spec.db = skew * spec.da;
     for (int k = 0; k < TP_BLEND_TRIES; k++) {
         if (tp_blend_build(&a->blend, &c, &spec) < 0)
             return -1;

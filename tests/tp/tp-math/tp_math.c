@@ -155,6 +155,31 @@ static void caps_line(void)
     printf("line (3,4) caps: speed %.4f acceleration %.4f\n", c.v, c.a);
 }
 
+/* The speed a blend of a given cut allows and the cut a speed needs are inverses, and the blend's
+ * length estimate lies between its chord and the path through the corner. */
+static void blend_speed_inverse(void)
+{
+    int bad = 0;
+    tp_blend_init();
+    for (int k = 0; k < 2000; k++) {
+        tp_corner_t c;
+        memset(&c, 0, sizeof(c));
+        c.theta = (0.01 + 3.0 * urand());
+        c.kink = urand() < 0.3 ? 10.0 * urand() : 0.0;
+        double d = 1e-3 + urand(), acc = 10.0 + 1e4 * urand(), jerk = urand() < 0.2 ? 0.0 : 1e3 + 1e6 * urand();
+        double len, v = tp_blend_speed_at_cut(&c, d, acc, jerk, &len);
+        double back = tp_blend_need_cut(&c, v, acc, jerk);
+        double chord = 2.0 * d * cos(0.5 * c.theta);
+        if (!(fabs(back - d) <= 1e-6 * d) || !(len >= chord * (1.0 - 1e-9)) || !(len <= 2.0 * d * (1.0 + 1e-9)))
+            bad++;
+        CHECK(fabs(back - d) <= 1e-6 * d, "theta %g kink %g: cut %g gives speed %g, which needs cut %g", c.theta,
+              c.kink, d, v, back);
+        CHECK(len >= chord * (1.0 - 1e-9) && len <= 2.0 * d * (1.0 + 1e-9), "theta %g: length %g of cut %g",
+              c.theta, len, d);
+    }
+    printf("blend speed at cut: 2000 random corners, %d not inverse to the cut a speed needs\n", bad);
+}
+
 int main(void)
 {
     known_values();
@@ -165,6 +190,7 @@ int main(void)
     blend_corner(10.0, 0.001);
     blend_corner(170.0, 0.05);
     blend_corner(0.5, 0.01);
+    blend_speed_inverse();
     if (failures)
         printf("%d check(s) failed\n", failures);
     else
