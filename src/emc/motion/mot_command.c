@@ -204,8 +204,11 @@ static void handle_one(const emcmot_command_t *cmd)
         mot->status.config_serial++;
 }
 
-/* Non-zero when a move must wait in the ring because the planner queue is full. */
-static int planner_full(void)
+/* Non-zero when a move must wait in the ring: the planner has no room, or the moves it holds
+   fill the shadow of their ids (units merge several moves into one planner entry, so this can
+   come first). The status reports this as queue_full, so task never queues moves that would
+   sit in the ring. */
+int mot_planner_full(void)
 {
     return mot->tp_ops->queue_full(mot->tp) ||
         mot->shadow_count >= MOT_TP_QUEUE_SIZE;
@@ -221,7 +224,7 @@ void mot_command_handler(void *arg, long period_ns)
     for (int n = 0; n < MOT_COMMAND_BUDGET; n++) {
         if (!emcmot_ring_peek(mot->shm, &cmd))
             break;
-        if (mot_cmd_is_move(cmd.command) && planner_full())
+        if (mot_cmd_is_move(cmd.command) && mot_planner_full())
             break;
         emcmot_ring_pop(mot->shm);
         handle_one(&cmd);

@@ -274,6 +274,8 @@ int mot_pins_create(const struct mot_config *cfg);
 
 /* ---- mot_command.c ---- */
 void mot_command_handler(void *arg, long period_ns);
+/* No room for another move (the planner's queue or the shadow of move ids is full). */
+int mot_planner_full(void);
 
 /* ---- mot_control.c ---- */
 void mot_controller(void *arg, long period_ns);

@@ -50,7 +50,7 @@ static void state_status(emcmot_status_t *s)
     s->probe_err_inhibit_home = mot->probe_err_inhibit_home;
     s->queue_depth = mot->coord ? mot->queue_depth : 0;
     s->active_depth = mot->coord ? mot->active_depth : 0;
-    s->queue_full = mot->queue_full;
+    s->queue_full = mot->coord ? mot_planner_full() : mot->queue_full;
     s->exec_id = mot->exec_id;
     s->exec_tag = mot->exec_tag;
     s->motion_type = *mot->pins->motion_type;

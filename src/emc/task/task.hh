@@ -85,6 +85,7 @@ private:
     void forward_motion_errors();
     void check_rejections();
     bool motion_done() const;
+    bool motion_queue_room() const;
     bool motion_echoed() const;
     bool command_ready();
     // plan (task_plan.cc)

@@ -29,7 +29,7 @@ bool Task::precondition_met(const NMLmsg &msg)
 {
     switch (precondition_of(msg.type)) {
     case EMC_TASK_EXEC_WAITING_FOR_MOTION_QUEUE:
-        return !mst_.queue_full && mst_.queue_depth < mst_.queue_capacity - 1;
+        return motion_queue_room();
     case EMC_TASK_EXEC_WAITING_FOR_MOTION:
         return motion_done() && io_.done();
     default:
@@ -45,7 +45,7 @@ bool Task::exec_waiting_done()
         st_.task.delayLeft = delay_until_ - now_ > 0 ? delay_until_ - now_ : 0;
         return now_ >= delay_until_;
     case EMC_TASK_EXEC_WAITING_FOR_MOTION: return motion_done();
-    case EMC_TASK_EXEC_WAITING_FOR_MOTION_QUEUE: return !mst_.queue_full;
+    case EMC_TASK_EXEC_WAITING_FOR_MOTION_QUEUE: return motion_queue_room();
     case EMC_TASK_EXEC_WAITING_FOR_IO: return io_.done() && input_wait_done();
     case EMC_TASK_EXEC_WAITING_FOR_MOTION_AND_IO: return motion_done() && io_.done();
     case EMC_TASK_EXEC_WAITING_FOR_SYSTEM_CMD: {

@@ -8,6 +8,9 @@
 namespace {
 const double ATTACH_TIMEOUT_S = 10.0;   // launcher: task retries while the HAL files load motmod
 const double RING_RETRY_S = 0.0002;
+// Queued moves wait in the interp list while the command ring holds this many commands (a
+// quarter of it: the rest stays free for immediate commands such as pause, abort, overrides).
+const unsigned MOTION_RING_QUEUE_LIMIT = EMCMOT_RING_CAPACITY / 4;
 }
 
 // Attach once motion exists; then configure it and start in E-stop, MANUAL.
@@ -71,6 +74,15 @@ void Task::send(emcmot_command_t c)
         }
         usleep((useconds_t)(RING_RETRY_S * 1e6));
     }
+}
+
+// Room for another queued move: the planner has room, and the command ring is no more than a
+// quarter full, so moves motion cannot take yet (planner full, feed hold) wait here, in the
+// interp list, instead of filling the ring and blocking task in send().
+bool Task::motion_queue_room() const
+{
+    if (mst_.queue_full || mst_.queue_depth >= mst_.queue_capacity - 1) return false;
+    return !mot_ || emcmot_pending(mot_) < MOTION_RING_QUEUE_LIMIT;
 }
 
 // Translate an NML message for motion and queue the result.
