@@ -22,8 +22,14 @@ wait_until "encoder 0 counts" above $B.encoder.00.count 30
 halcmd setp $B.encoder.00.index-enable 1
 wait_until "the index clears index-enable" pin_is $B.encoder.00.index-enable FALSE
 check "rawlatch is where the index is (a multiple of 100)" multiple_of_100
+# the motor stops while count, rawcounts and rawlatch are compared (halcmd reads pins one by one
+# while the servo thread runs: a moving count can change between them)
+halcmd setp $B.stepgen.00.velocity-cmd 0
+stopped() { local a; a=$(halcmd getp $B.encoder.00.rawcounts); sleep 0.05; [ "$a" = "$(halcmd getp $B.encoder.00.rawcounts)" ]; }
+wait_until "the motor stops" stopped
 check "count restarted at the index" zeroed_at_latch
 check "count-latched is 0 (the new zero)" pin_is $B.encoder.00.count-latched 0
+halcmd setp $B.stepgen.00.velocity-cmd 300
 first=$(halcmd getp $B.encoder.00.rawlatch)
 halcmd setp $B.encoder.00.no_clear_on_index 1
 halcmd setp $B.encoder.00.index-enable 1
