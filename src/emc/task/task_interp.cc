@@ -1,36 +1,10 @@
 // task_interp.cc: the interpreter task owns: set-up, synch with the machine, active codes, user M codes, tools.
 #include "task.hh"
 
+#include <algorithm>
 #include <cstdio>
 
 #include "inifile.hh"
-
-namespace {
-
-int plane_code(CanonPlane p)
-{
-    switch (p) {
-    case CANON_PLANE_YZ: return 190;
-    case CANON_PLANE_XZ: return 180;
-    case CANON_PLANE_UV: return 171;
-    case CANON_PLANE_VW: return 191;
-    case CANON_PLANE_UW: return 181;
-    default: return 170;
-    }
-}
-
-int origin_code(int index)
-{
-    static const int codes[] = {540, 550, 560, 570, 580, 590, 591, 592, 593};
-    return index >= 1 && index <= 9 ? codes[index - 1] : 540;
-}
-
-int path_code(CanonMotionMode m)
-{
-    return m == CANON_EXACT_STOP ? 611 : m == CANON_EXACT_PATH ? 610 : 640;
-}
-
-}  // namespace
 
 bool Task::init_interp(std::string *error)
 {
@@ -129,42 +103,23 @@ void Task::interp_synch()
     s.selected_pocket = io_.prepped_index();
 }
 
-// The active G/M codes and settings (nml.md sec. 5 layout).
+// The active G/M codes and settings (nml.md sec. 5 layout): the interpreter's own, as a snapshot
+// between blocks (no group-0, stop or tool-change code of a block in progress) that keeps the
+// exact cutter compensation mode (G41.1/G42.1), so a state tag restores it.
 void Task::interp_codes(int32_t *g, int32_t *m, double *v) const
 {
+    int gi[STATE_TAG_GCODES], mi[STATE_TAG_MCODES];
+    interp_->active_g_codes(gi);
+    interp_->active_m_codes(mi);
+    interp_->active_settings(v);
     const InterpState &s = interp_->state();
-    g[0] = s.sequence_number;
-    g[1] = s.motion_mode;
-    g[2] = -1;
-    g[3] = plane_code(s.plane);
-    g[4] = s.comp_code;
-    g[5] = s.units == CANON_UNITS_INCHES ? 200 : 210;
-    g[6] = s.distance_incremental ? 910 : 900;
-    g[7] = s.feed_mode == FEED_INVERSE_TIME ? 930 : s.feed_mode == FEED_UNITS_PER_REV ? 950 : 940;
-    g[8] = origin_code(s.origin_index);
-    g[9] = s.tlo_code;
-    g[10] = s.retract == RETRACT_OLD_Z ? 980 : 990;
-    g[11] = path_code(s.control_mode);
-    g[12] = -1;
-    g[13] = s.css_mode[0] ? 960 : 970;
-    g[14] = s.ijk_absolute ? 901 : 911;
-    g[15] = s.lathe_diameter ? 70 : 80;
-    g[16] = s.params[5210] == 1.0 ? 923 : -1;
-    m[0] = s.sequence_number;
-    m[1] = -1;
-    m[2] = s.spindle_dir[0] == CANON_CLOCKWISE ? 3 : s.spindle_dir[0] == CANON_COUNTERCLOCKWISE ? 4 : 5;
-    m[3] = -1;
-    m[4] = s.mist ? 7 : s.flood ? -1 : 9;
-    m[5] = s.flood ? 8 : -1;
-    m[6] = s.feed_override && s.speed_override ? 48 : 49;
-    m[7] = s.adaptive_feed ? 52 : -1;
-    m[8] = s.feed_hold ? 53 : -1;
-    m[9] = -1;
-    v[0] = s.sequence_number;
-    v[1] = s.feed_rate;
-    v[2] = s.speed[0];
-    v[3] = s.tolerance;
-    v[4] = s.naivecam_tolerance;
+    gi[2] = -1;
+    gi[4] = s.comp_code;
+    gi[16] = s.params[5210] == 1.0 ? 923 : -1;
+    mi[1] = -1;
+    mi[3] = -1;
+    std::copy(gi, gi + STATE_TAG_GCODES, g);
+    std::copy(mi, mi + STATE_TAG_MCODES, m);
 }
 
 void Task::interp_tag(state_tag_t &t) const
