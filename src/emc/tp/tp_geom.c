@@ -167,16 +167,6 @@ tp_vec_t tp_quintic_point(const tp_quintic_t *q, double u)
     return r;
 }
 
-/* First derivative of a quintic w.r.t. u (Horner). */
-static tp_vec_t quintic_d1(const tp_quintic_t *q, double u)
-{
-    tp_vec_t r;
-    for (int i = 0; i < TP_NAX; i++)
-        r.x[i] = (((5.0 * q->c[5].x[i] * u + 4.0 * q->c[4].x[i]) * u + 3.0 * q->c[3].x[i]) * u +
-                  2.0 * q->c[2].x[i]) * u + q->c[1].x[i];
-    return r;
-}
-
 /* Quintic position and derivatives w.r.t. length (u = s / len). */
 static tp_jet_t quintic_jet(const tp_geo_t *g, double s)
 {
@@ -292,21 +282,17 @@ static void arc_bounds(const tp_geo_t *g, tp_bounds_t *b)
     b->d3[TP_PATH_AX] = w3;
 }
 
-/* de Casteljau restriction of a degree-n polygon to [u0, u1], on the nax axes listed in ax (the
- * other components of out are zero). */
-static void bez_restrict(const tp_vec_t *c, int n, double u0, double u1, const int *ax, int nax,
-                         tp_vec_t *out)
+/* de Casteljau restriction of a degree-n polynomial (one axis, control values c) to [u0, u1]. */
+static void bez_restrict1(const double *c, int n, double u0, double u1, double *out)
 {
-    tp_vec_t tmp[6];
-    memset(out, 0, (size_t)(n + 1) * sizeof(*out));
+    double tmp[6];
     /* split at u1, keep the left part; then split that at u0/u1, keep the right part */
     for (int k = 0; k <= n; k++)
         tmp[k] = c[k];
     for (int r = 1; r <= n; r++) {
         out[r - 1] = tmp[0];
         for (int k = 0; k <= n - r; k++)
-            for (int q = 0; q < nax; q++)
-                tmp[k].x[ax[q]] += u1 * (tmp[k + 1].x[ax[q]] - tmp[k].x[ax[q]]);
+            tmp[k] += u1 * (tmp[k + 1] - tmp[k]);
     }
     out[n] = tmp[0];
     double t = u1 > 0.0 ? u0 / u1 : 0.0;
@@ -315,59 +301,62 @@ static void bez_restrict(const tp_vec_t *c, int n, double u0, double u1, const i
     for (int r = 1; r <= n; r++) {
         out[n - r + 1] = tmp[n - r + 1];
         for (int k = 0; k <= n - r; k++)
-            for (int q = 0; q < nax; q++)
-                tmp[k].x[ax[q]] += t * (tmp[k + 1].x[ax[q]] - tmp[k].x[ax[q]]);
+            tmp[k] += t * (tmp[k + 1] - tmp[k]);
     }
     out[0] = tmp[0];
 }
 
-/* Largest |component| (of the nax axes listed in ax; the others are zero) and metric norm over a
- * polygon, scaled. */
-static void poly_max(const tp_vec_t *c, int n, double scale, tp_metric_t m, const int *ax, int nax,
-                     double *out)
+/* One derivative order of a quintic over [u0, u1]: from the control values of the previous order
+ * (n + 1 per axis, nax axes), this order's (n per axis, times n), restricted, their largest
+ * |value| per axis and the largest metric norm (axes of the metric that do not move count 0). */
+static void order_bounds(double (*prev)[6], double (*next)[6], int n, int nax, const int *ax,
+                         const int *mq, double u0, double u1, double scale, double *out)
 {
-    int first = tp_metric_first(m);
-    double norm = 0.0;
+    double r[TP_NAX][6];
     for (int i = 0; i < TP_NBOUND; i++)
         out[i] = 0.0;
-    for (int k = 0; k <= n; k++) {
-        for (int q = 0; q < nax; q++) {
-            double v = fabs(c[k].x[ax[q]]);
-            if (v > out[ax[q]])
-                out[ax[q]] = v;
-        }
-        double nk = tp_vec_norm3(&c[k], first);
+    for (int q = 0; q < nax; q++) {
+        for (int k = 0; k < n; k++)
+            next[q][k] = n * (prev[q][k + 1] - prev[q][k]);
+        bez_restrict1(next[q], n - 1, u0, u1, r[q]);
+        double m = 0.0;
+        for (int k = 0; k < n; k++)
+            m = fmax(m, fabs(r[q][k]));
+        out[ax[q]] = m * scale;
+    }
+    double norm = 0.0;
+    for (int k = 0; k < n; k++) {
+        double x = mq[0] >= 0 ? r[mq[0]][k] : 0.0, y = mq[1] >= 0 ? r[mq[1]][k] : 0.0;
+        double z = mq[2] >= 0 ? r[mq[2]][k] : 0.0;
+        double nk = sqrt(x * x + y * y + z * z);
         if (nk > norm)
             norm = nk;
     }
-    for (int q = 0; q < nax; q++)
-        out[ax[q]] *= scale;
     out[TP_PATH_AX] = norm * scale;
 }
 
-/* Quintic bounds over [s0, s1] from the restricted derivative polygons (convex hull); axes that
- * do not move are skipped. */
+/* Quintic bounds over [s0, s1] from the restricted derivative polygons (convex hull); only the
+ * axes that move are computed (the others have no derivatives). */
 static void quintic_bounds(const tp_geo_t *g, double s0, double s1, tp_bounds_t *b)
 {
-    tp_vec_t d1[5], d2[4], d3[3], r[6];
+    double p[TP_NAX][6], d1[TP_NAX][6], d2[TP_NAX][6], d3[TP_NAX][6];
     double u0 = s0 / g->len, u1 = s1 / g->len, L = g->len;
-    int ax[TP_NAX], nax = 0;
+    int ax[TP_NAX], nax = 0, first = tp_metric_first(g->metric), mq[3] = {-1, -1, -1};
     for (int i = 0; i < TP_NAX; i++) {
         int moves = 0;
         for (int k = 1; k <= 5 && !moves; k++)
             moves = g->u.q.b[k].x[i] != g->u.q.b[0].x[i];
-        if (moves)
-            ax[nax++] = i;
+        if (!moves)
+            continue;
+        if (i >= first && i < first + 3)
+            mq[i - first] = nax;
+        for (int k = 0; k <= 5; k++)
+            p[nax][k] = g->u.q.b[k].x[i];
+        ax[nax++] = i;
     }
-    bez_diff(g->u.q.b, 5, d1);
-    bez_diff(d1, 4, d2);
-    bez_diff(d2, 3, d3);
-    bez_restrict(d1, 4, u0, u1, ax, nax, r);
-    poly_max(r, 4, 1.0 / L, g->metric, ax, nax, b->d1);
-    bez_restrict(d2, 3, u0, u1, ax, nax, r);
-    poly_max(r, 3, 1.0 / (L * L), g->metric, ax, nax, b->d2);
-    bez_restrict(d3, 2, u0, u1, ax, nax, r);
-    poly_max(r, 2, 1.0 / (L * L * L), g->metric, ax, nax, b->d3);
+    order_bounds(p, d1, 5, nax, ax, mq, u0, u1, 1.0 / L, b->d1);
+    order_bounds(d1, d2, 4, nax, ax, mq, u0, u1, 1.0 / (L * L), b->d2);
+    order_bounds(d2, d3, 3, nax, ax, mq, u0, u1, 1.0 / (L * L * L), b->d3);
 }
 
 /* Derivative bounds over [s0, s1]. */
@@ -386,7 +375,20 @@ void tp_geo_bounds(const tp_geo_t *g, double s0, double s1, tp_bounds_t *b)
     }
 }
 
-/* Length of a quintic in a metric: Gauss-Legendre with 8 nodes on |dp/du|. */
+/* Speed |dp/du| of a quintic at u in the three axes from first on (Horner). */
+static double quintic_speed3(const tp_quintic_t *q, int first, double u)
+{
+    double d[3];
+    for (int k = 0; k < 3; k++) {
+        int i = first + k;
+        d[k] = (((5.0 * q->c[5].x[i] * u + 4.0 * q->c[4].x[i]) * u + 3.0 * q->c[3].x[i]) * u +
+                2.0 * q->c[2].x[i]) * u + q->c[1].x[i];
+    }
+    return sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+}
+
+/* Length of a quintic in a metric: Gauss-Legendre with 8 nodes on |dp/du| (only the metric's
+ * axes are evaluated: blends are built several times per corner). */
 double tp_quintic_length(const tp_quintic_t *q, tp_metric_t m)
 {
     static const double xg[4] = {0.1834346424956498, 0.5255324099163290, 0.7966664774136267,
@@ -397,8 +399,7 @@ double tp_quintic_length(const tp_quintic_t *q, tp_metric_t m)
     int first = tp_metric_first(m);
     for (int k = 0; k < 8; k++) {
         double u = 0.5 + 0.5 * (k < 4 ? -xg[k] : xg[k - 4]);
-        tp_vec_t d = quintic_d1(q, u);
-        sum += (k < 4 ? wg[k] : wg[k - 4]) * tp_vec_norm3(&d, first);
+        sum += (k < 4 ? wg[k] : wg[k - 4]) * quintic_speed3(q, first, u);
     }
     return 0.5 * sum;
 }
