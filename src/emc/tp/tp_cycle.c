@@ -101,7 +101,7 @@ static void report(tp_planner_t *tp, tp_cycle_out_t *out, double fs, double rs)
     out->pos = tp_vec_to_pose(&tp->pos);
     out->current_vel = tp->ex.tap != TP_TAP_NONE ? fabs(tp->ex.tap_v) : tp->ex.v;
     out->queue_depth = tp_queue_live(tp);
-    out->queue_full = out->queue_depth >= tp->queue_size;
+    out->queue_full = tp_queue_full(tp);
     out->done = out->queue_depth == 0 && tp->ex.v <= 0.0 && tp->ex.dir > 0 && !tp->reverse_req;
     out->paused = tp->paused && tp->ex.v <= 0.0;
     out->reverse = tp->ex.dir < 0;
@@ -187,6 +187,7 @@ tp_result_t tp_cycle_run(tp_planner_t *tp, const tp_cycle_in_t *in, tp_cycle_out
             tp->pos = tp_sync_tap_position(tp);
     }
     finish_abort(tp);
+    tp_queue_release(tp);
     report(tp, out, fs, rs);
     return TP_OK;
 }

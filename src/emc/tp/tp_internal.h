@@ -165,6 +165,7 @@ struct tp_planner {
     tp_seg_t *segs;
     uint32_t seg_cap;
     uint64_t seg_head, seg_tail, seg_done;
+    uint64_t seg_room;          /* moves before it no longer count against the queue size */
     tp_elem_t *elems;
     uint32_t elem_cap;
     uint64_t elem_head, elem_tail;
@@ -245,6 +246,8 @@ static inline const tp_geo_t *tp_elem_geo(tp_planner_t *tp, const tp_elem_t *e)
 tp_result_t tp_queue_add(tp_planner_t *tp, const tp_segment_t *seg);
 void tp_queue_reset(tp_planner_t *tp);
 int tp_queue_live(const tp_planner_t *tp);
+int tp_queue_full(const tp_planner_t *tp);
+void tp_queue_release(tp_planner_t *tp);
 /* tp_emit.c */
 void tp_emit_piece(tp_planner_t *tp, tp_seg_t *owner, tp_seg_t *geo_seg, int is_blend, double u0,
                    double u1, uint32_t flags);

@@ -296,7 +296,7 @@ int tp_planner_queue_depth(const tp_planner_t *tp)
 /* No room for another move. */
 int tp_planner_queue_full(const tp_planner_t *tp)
 {
-    return tp ? tp_queue_live(tp) >= tp->queue_size : 1;
+    return tp ? tp_queue_full(tp) : 1;
 }
 
 /* Current commanded position. */

@@ -3,16 +3,41 @@
 #include <string.h>
 #include "tp_internal.h"
 
+/* Places of completed moves freed per cycle: at least this many, and a share of those waiting. */
+#define TP_RELEASE_MIN 2
+#define TP_RELEASE_SPREAD 8
+
 /* Segments added and not yet completed. */
 int tp_queue_live(const tp_planner_t *tp)
 {
     return (int)(tp->seg_head - tp->seg_done);
 }
 
+/* No room for another move: the completed moves free their places gradually (tp_queue_release). */
+int tp_queue_full(const tp_planner_t *tp)
+{
+    return tp->seg_head - tp->seg_room >= (uint64_t)tp->queue_size;
+}
+
+/* Once per cycle: free the places of completed moves.  A blend completes all the moves it
+ * spans at once; freeing their places over a few cycles spreads the adds that refill them (and
+ * their blend construction) instead of taking them all in one cycle.  A queue less than half
+ * full gets every place back at once. */
+void tp_queue_release(tp_planner_t *tp)
+{
+    uint64_t lag = tp->seg_done - tp->seg_room;
+    if (tp->seg_done < tp->seg_room || 2 * (tp->seg_head - tp->seg_done) < (uint64_t)tp->queue_size) {
+        tp->seg_room = tp->seg_done;
+        return;
+    }
+    uint64_t step = (lag + TP_RELEASE_SPREAD - 1) / TP_RELEASE_SPREAD;
+    tp->seg_room += lag < TP_RELEASE_MIN ? lag : step < TP_RELEASE_MIN ? TP_RELEASE_MIN : step;
+}
+
 /* Forget everything queued; the position stays. */
 void tp_queue_reset(tp_planner_t *tp)
 {
-    tp->seg_head = tp->seg_tail = tp->seg_done = 0;
+    tp->seg_head = tp->seg_tail = tp->seg_done = tp->seg_room = 0;
     tp->elem_head = tp->elem_tail = 0;
     tp->reg_head = tp->reg_tail = 0;
     tp->aout_head = tp->aout_tail = 0;
@@ -189,7 +214,7 @@ static void take_io(tp_planner_t *tp, tp_seg_t *s)
 static int have_room(tp_planner_t *tp)
 {
     reclaim(tp);
-    if (tp_queue_live(tp) >= tp->queue_size)
+    if (tp_queue_full(tp))
         return 0;
     if (tp->seg_head - tp->seg_tail + 2 > tp->seg_cap)
         return 0;

@@ -550,6 +550,39 @@ static void lone_move(void)
     tp_planner_destroy(tp);
 }
 
+/* Moves completed together (a blend spans several short moves) free their queue places over a
+ * few cycles, so the adds that refill the queue spread out; the motion does not change. */
+static void queue_room(void)
+{
+    tp_planner_t *tp = machine(0.0);
+    tp_cycle_in_t in = inputs();
+    tp_cycle_out_t out;
+    enum { MOVES = 3000 };
+    int next = 0, most_done = 0, most_added = 0, cycles = 0, starved = 0;
+    tp_planner_set_term_cond(tp, TP_TERM_COND_BLEND, 0.002);
+    for (int k = 0; k < 200000 && !(next == MOVES && cycles && out.done); k++) {
+        int depth0 = tp_planner_queue_depth(tp), added = 0;
+        while (next < MOVES && !tp_planner_queue_full(tp)) {
+            double a = 0.004 * (next + 1);     /* chords of a circle of radius 1, 4 mm apart */
+            tp_segment_t m = move(sin(a), 1.0 - cos(a), 0.0, 4.0, next + 1);
+            if (tp_planner_add(tp, &m) != TP_OK)
+                break;
+            next++;
+            added++;
+        }
+        if (k > 0 && next < MOVES && tp_planner_queue_depth(tp) < 100)
+            starved = 1;                /* the machine's queue holds 200 moves */
+        tp_planner_run_cycle(tp, &in, &out);
+        int done = depth0 + added - out.queue_depth;
+        most_done = done > most_done ? done : most_done;
+        most_added = k > 0 && added > most_added ? added : most_added;
+        cycles = k + 1;
+    }
+    printf("queue room: %d cycles, at most %d moves completed and %d added in one cycle, "
+           "queue kept over half full %s\n", cycles, most_done, most_added, starved ? "no" : "yes");
+    tp_planner_destroy(tp);
+}
+
 int main(void)
 {
     exact_modes();
@@ -566,5 +599,6 @@ int main(void)
     rigid_tap();
     locking_indexer();
     reverse_run();
+    queue_room();
     return 0;
 }
