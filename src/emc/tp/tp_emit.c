@@ -7,6 +7,10 @@
 #define TP_CAP_STEPS 64.0
 /* A region aims at 1/TP_REGION_SHARE of the braking distance at its speed. */
 #define TP_REGION_SHARE 24.0
+/* Short pieces whose speed caps differ by more than this factor stay apart (trapezoid, S-curve):
+ * a short straight between two slow blends can speed up in between. */
+#define TP_REGION_APART 1.5
+#define TP_REGION_APART_JERK 5.0
 /* Elements a single add may need (blend halves, body, fallback pieces, a unit's moves). */
 #define TP_EMIT_PER_ADD TP_EMIT_SPACE
 
@@ -72,7 +76,10 @@ static void region_add(tp_planner_t *tp, const tp_region_t *piece)
                          fabs(r->s0 + r->len - piece->s0) <= 1e-9 * (1.0 + fabs(piece->s0));
         int short_r = r->len < region_reach(tp, r);
         int short_p = piece->len < region_reach(tp, piece);
-        if (compatible && (same || (short_r && short_p && (faster || region_far(tp, r))))) {
+        /* a jerk-limited speed change needs more room: only a large gap pays for a region */
+        double ratio = tp->type == TP_PLANNER_SCURVE ? TP_REGION_APART_JERK : TP_REGION_APART;
+        int apart = fmax(piece->v_mach, r->v_mach) > ratio * fmin(piece->v_mach, r->v_mach);
+        if (compatible && (same || (short_r && short_p && !apart && (faster || region_far(tp, r))))) {
             r->v_mach = fmin(r->v_mach, piece->v_mach);
             r->a = fmin(r->a, piece->a);
             r->a_rest = fmin(r->a_rest, piece->a_rest);  /* the smaller chord holds for both */

@@ -173,6 +173,51 @@ static void sharp_corner_no_tolerance(void)
     tp_planner_destroy(tp);
 }
 
+/* A short move between two corners the tolerance slows down (a raster's step to the next row, on
+ * a machine of 50 mm/s and 5000 mm/s^2): between the blends the speed rises again, it is not held
+ * at the corners' speed.  Reports the cycles spent on the step and the fastest sample there. */
+static void short_step(void)
+{
+    tp_planner_t *tp = machine(0.0);
+    tp_limits_t l;
+    memset(&l, 0, sizeof(l));
+    l.cycle_time = T;
+    l.vlimit = 50.0;
+    l.amax = 5000.0;
+    l.max_feed_override = 1.0;
+    for (int i = 0; i < TP_NUM_AXES; i++) {
+        l.axis_vel[i] = 50.0;
+        l.axis_acc[i] = 5000.0;
+    }
+    tp_planner_set_limits(tp, &l);
+    tp_cycle_in_t in = inputs();
+    const double step = 0.2;
+    tp_segment_t m[3] = {move(20, 0, 0, 50.0, 1), move(20, step, 0, 50.0, 2), move(0, step, 0, 50.0, 3)};
+    tp_planner_set_term_cond(tp, TP_TERM_COND_BLEND, 0.01);
+    for (int k = 0; k < 3; k++) {
+        m[k].ini_maxvel = 50.0;
+        m[k].acc = 5000.0;
+        tp_planner_add(tp, &m[k]);
+    }
+    tp_cycle_out_t prev, out;
+    tp_planner_get_pos(tp, &prev.pos);
+    double v_step = 0.0;
+    int cycles = 0;
+    for (int k = 0; k < 20000; k++) {
+        tp_planner_run_cycle(tp, &in, &out);
+        double y = out.pos.tran.y;
+        if (y > 0.0 && y < step) {
+            v_step = fmax(v_step, speed(&prev, &out));
+            cycles++;
+        }
+        prev = out;
+        if (out.done)
+            break;
+    }
+    printf("G64 P0.01 short step between corners: %d cycles, fastest %.1f\n", cycles, v_step);
+    tp_planner_destroy(tp);
+}
+
 /* Peak speed of a long X move with the given feed, feed scale and rapid/feed type. */
 static double peak(double vel, double fs, double rs, int rapid, double af)
 {
@@ -589,6 +634,7 @@ int main(void)
     lone_move();
     corner_modes();
     sharp_corner_no_tolerance();
+    short_step();
     overrides();
     hold_and_pause();
     abort_move();
