@@ -11,6 +11,8 @@
 #define TP_CAPS_ROOT_MARGIN (1.0 - 1e-9)
 /* Weight of the speed-change time in the choice of the reserve. */
 #define TP_CAPS_CHANGE_SHARE 0.1
+/* Bisection steps for the top speed of a rest-to-rest crossing. */
+#define TP_CAPS_REST_ITER 40
 
 /* Largest x with k x <= limit over the limited axes that move (INFINITY if none). */
 static double ratio_min(const double *lim, const double *k)
@@ -162,21 +164,61 @@ static double caps_cost(const tp_caps_t *c, double len)
     return len / c->v + TP_CAPS_CHANGE_SHARE * c->v / c->a;
 }
 
+/* Time to speed up from rest to v with acceleration a and jerk j (0 = none), and the distance. */
+static double rise_time(double v, double a, double j, double *dist)
+{
+    double t = v / a;
+    if (j > 0.0)
+        t = v * j >= a * a ? v / a + a / j : 2.0 * sqrt(v / j);
+    *dist = 0.5 * v * t;                /* the profile is point-symmetric about its middle */
+    return t;
+}
+
+/* Time to cross a piece of length len with caps c from rest (ends 1) or from rest to rest (ends 2):
+ * up to the cap (and down again), or, when too short for that, to the highest speed it leaves room
+ * for (bisection). */
+double tp_caps_rest_time(const tp_caps_t *c, double len, int ends)
+{
+    double d, t = rise_time(c->v, c->a, c->j, &d);
+    if (ends * d <= len)
+        return ends * t + (len - ends * d) / c->v;
+    double lo = 0.0, hi = c->v;
+    for (int k = 0; k < TP_CAPS_REST_ITER; k++) {
+        double mid = 0.5 * (lo + hi);
+        rise_time(mid, c->a, c->j, &d);
+        if (ends * d <= len)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    return ends * rise_time(lo, c->a, c->j, &d);
+}
+
+/* Estimated time of a piece with caps c: from or to rest when rest_ends of its ends are stops, else
+ * the rough crossing time. */
+static double piece_cost(const tp_caps_t *c, double len, int rest_ends)
+{
+    if (!(c->v > 0.0) || !(c->a > 0.0))
+        return INFINITY;
+    return rest_ends > 0 ? tp_caps_rest_time(c, len, rest_ends) : caps_cost(c, len);
+}
+
 /* Compute the caps.  A sharply curved piece spends most of the limits on its curvature: keeping a
  * smaller share for speed changes raises its speed, which pays on short pieces (the speed then
- * changes mostly outside them); the share with the least estimated time wins. */
+ * changes mostly outside them); the share with the least estimated time wins.  A piece that starts
+ * or ends at rest (rest_ends of its ends) changes its speed inside: its time is estimated as such. */
 void tp_caps_compute(const tp_bounds_t *b, const tp_axlim_t *l, double v_need, int with_jerk,
-                     double len, tp_caps_t *out)
+                     double len, int rest_ends, tp_caps_t *out)
 {
     static const double reserve[] = {TP_CAPS_RESERVE, TP_CAPS_RESERVE / 4.0, TP_CAPS_RESERVE / 16.0};
     caps_with_reserve(b, l, v_need, with_jerk, reserve[0], out);
     if (out->v >= fmin(ratio_min(l->vel, b->d1), v_need))
         return;                         /* not held back by the curvature: nothing to gain */
-    double best = caps_cost(out, len);
+    double best = piece_cost(out, len, rest_ends);
     for (int k = 1; k < (int)(sizeof(reserve) / sizeof(reserve[0])); k++) {
         tp_caps_t c;
         caps_with_reserve(b, l, v_need, with_jerk, reserve[k], &c);
-        double cost = caps_cost(&c, len);
+        double cost = piece_cost(&c, len, rest_ends);
         if (!(c.v > out->v) || !(cost < best))
             break;
         *out = c;

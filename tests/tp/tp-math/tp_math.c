@@ -151,8 +151,34 @@ static void caps_line(void)
     }
     l.vel[1] = 2.0;
     tp_caps_t c;
-    tp_caps_compute(&b, &l, 1e9, 0, 1.0, &c);
+    tp_caps_compute(&b, &l, 1e9, 0, 1.0, 0, &c);
     printf("line (3,4) caps: speed %.4f acceleration %.4f\n", c.v, c.a);
+}
+
+/* Rest-to-rest and from-rest crossing times of a piece (the estimate caps use to choose how much
+ * acceleration a curved piece keeps): closed forms for reaching the cap, and pieces too short for
+ * it; the time grows with the length and falls with the limits. */
+static void rest_times(void)
+{
+    tp_caps_t trap = {10.0, 100.0, 0.0, 100.0}, sc = {10.0, 100.0, 1000.0, 100.0};
+    printf("rest to rest over 10 (trapezoid): %.6f, from rest: %.6f\n", tp_caps_rest_time(&trap, 10.0, 2),
+           tp_caps_rest_time(&trap, 10.0, 1));
+    printf("rest to rest over 0.25 (trapezoid): %.6f\n", tp_caps_rest_time(&trap, 0.25, 2));
+    printf("rest to rest over 10 (S-curve): %.6f, over 0.002: %.6f\n", tp_caps_rest_time(&sc, 10.0, 2),
+           tp_caps_rest_time(&sc, 0.002, 2));
+    int bad = 0;
+    for (int k = 0; k < 2000; k++) {
+        tp_caps_t c = {1.0 + 99.0 * urand(), 10.0 + 990.0 * urand(), urand() < 0.3 ? 0.0 : 100.0 + 1e5 * urand(), 0.0};
+        double len = 1e-3 + 10.0 * urand();
+        int ends = 1 + (urand() < 0.5);
+        double t = tp_caps_rest_time(&c, len, ends), t_long = tp_caps_rest_time(&c, 1.1 * len, ends);
+        tp_caps_t more = c;
+        more.a *= 1.5;
+        bad += !(t > 0.0) || !(t_long > t) || !(tp_caps_rest_time(&more, len, ends) <= t * (1.0 + 1e-9)) ||
+               !(t >= len / c.v);
+    }
+    CHECK(bad == 0, "%d crossing times not monotonic", bad);
+    printf("rest times: 2000 random pieces, %d not monotonic\n", bad);
 }
 
 /* The speed a blend of a given cut allows and the cut a speed needs are inverses, and the blend's
@@ -186,6 +212,7 @@ int main(void)
     profile_random(20000);
     braking_consistency(20000);
     caps_line();
+    rest_times();
     blend_corner(90.0, 0.01);
     blend_corner(10.0, 0.001);
     blend_corner(170.0, 0.05);
