@@ -290,6 +290,11 @@ static void arc_bounds(const tp_geo_t *g, tp_bounds_t *b)
     b->d1[TP_PATH_AX] = hypot(w1, ax);
     b->d2[TP_PATH_AX] = w2;
     b->d3[TP_PATH_AX] = w3;
+    if (rho > 0.0)
+        return;                         /* a spiral: its radius changes, the generic sums hold */
+    for (int i = 0; i < 3; i++)         /* in the plane only: an axial part moves linearly */
+        b->phase[i] = !(fabs(a->n[i]) * ax > 0.0 && hypot(a->e1[i], a->e2[i]) > 0.0);
+    b->phase[TP_PATH_AX] = 1;
 }
 
 /* de Casteljau restriction of a degree-n polygon to [u0, u1], on the nax axes listed in ax (the
@@ -359,9 +364,11 @@ static void quintic_bounds(const tp_geo_t *g, double s0, double s1, tp_bounds_t 
         if (moves)
             ax[nax++] = i;
     }
+    memset(b->phase, 0, sizeof(b->phase));
     bez_diff(g->u.q.b, 5, d1);
     bez_diff(d1, 4, d2);
     bez_diff(d2, 3, d3);
+    memset(b->phase, 0, sizeof(b->phase));
     bez_restrict(d1, 4, u0, u1, ax, nax, r);
     poly_max(r, 4, 1.0 / L, g->metric, ax, nax, b->d1);
     bez_restrict(d2, 3, u0, u1, ax, nax, r);
