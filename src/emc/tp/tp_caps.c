@@ -102,7 +102,7 @@ static void caps_at_speed(const tp_bounds_t *b, const tp_axlim_t *l, double v, i
 {
     double a_line = ratio_min(l->acc, b->d1);
     double j_line = with_jerk ? ratio_min(l->jerk, b->d1) : 0.0;
-    double a_keep = r * a_line, j_keep = with_jerk ? TP_CAPS_RESERVE * j_line : 0.0;
+    double a_keep = r * a_line, j_keep = with_jerk ? TP_CAPS_JERK_RESERVE * j_line : 0.0;
     out->v = v;
     out->a = fmin(usable_acc(b, l, v, with_jerk, j_keep), a_line);
     if (!(out->a > 0.0))
@@ -173,7 +173,7 @@ static void caps_with_reserve(const tp_bounds_t *b, const tp_axlim_t *l, double 
     double a_line = ratio_min(l->acc, b->d1);
     double j_line = with_jerk ? ratio_min(l->jerk, b->d1) : 0.0;
     double a_keep = r * a_line;
-    double j_keep = with_jerk ? TP_CAPS_RESERVE * j_line : 0.0;
+    double j_keep = with_jerk ? TP_CAPS_JERK_RESERVE * j_line : 0.0;
     double v_hi = fmin(ratio_min(l->vel, b->d1), v_need);
     if (!isfinite(v_hi))
         v_hi = 1e9;

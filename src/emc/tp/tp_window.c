@@ -142,18 +142,40 @@ static void anticipate(tp_window_t *w, double s0, double acc, double jerk)
         }
 }
 
+/* A region to anticipate: where it starts, the limits to anticipate, and whether settling the
+ * acceleration the cycle may end with, with its jerk, would reach it. */
+typedef struct ant {
+    double s;
+    tp_lim1_t lim;
+    int settle_reaches;
+} ant_t;
+
 /* Anticipate the regions noted in ant that lie before the first speed target.  From that target on
  * the targets' limits bind a state approaching: the executor brakes onto a target at rest
  * acceleration, or crosses it with no more acceleration than the span after it allows and settles
  * it with that span's jerk (momentum_ok); anticipating those regions as well would hold back the
- * speed-up all the way to them. */
-static void anticipate_untargeted(tp_window_t *w, const tp_target_t *ant, int na, double s)
+ * speed-up all the way to them.  Only their smaller jerk is anticipated once settling the
+ * acceleration under way would reach them: a brake begun just before a target may still carry
+ * acceleration across it. */
+static void anticipate_untargeted(tp_window_t *w, const ant_t *ant, int na, double s)
 {
     int ti = 0;                         /* a target the executor stands on is behind it */
     while (ti < w->n && w->t[ti].s - s <= 1e-6 + 1e-9 * fabs(w->t[ti].s))
         ti++;
-    for (int k = 0; k < na && (ti >= w->n || ant[k].s < w->t[ti].s); k++)
-        anticipate(w, ant[k].s, ant[k].lim.acc, ant[k].lim.jerk);
+    for (int k = 0; k < na; k++) {
+        if (ti >= w->n || ant[k].s < w->t[ti].s)
+            anticipate(w, ant[k].s, ant[k].lim.acc, ant[k].lim.jerk);
+        else if (ant[k].settle_reaches)
+            anticipate(w, ant[k].s, INFINITY, ant[k].lim.jerk);
+    }
+}
+
+/* How far settling acceleration a_pos with jerk j takes, at the speed the executor can reach by
+ * then (from v_now, accelerating at most at a_most, never above v), with a margin of 1.5. */
+static double settle_reach(double a_pos, double j, double v, double v_now, double a_most, double T)
+{
+    double t = a_pos / j;
+    return 1.5 * (fmin(v, v_now + a_most * (T + t)) + a_pos * T) * t;
 }
 
 /* Acceleration from which the executor can still settle to lim_r's before a region dist ahead
@@ -223,7 +245,7 @@ static double path_end(tp_planner_t *tp, int dir, const meet_t *last, int have_l
 void tp_window_build(tp_planner_t *tp, tp_window_t *w, double fs, double rs, double spindle_rps, int dir)
 {
     valley_t vl[TP_WINDOW_MAX + 1];
-    tp_target_t ant[TP_WINDOW_MAX];     /* regions to anticipate: where, with which limits */
+    ant_t ant[TP_WINDOW_MAX];           /* regions to anticipate */
     int n = 0, na = 0;
     double s = dir > 0 ? tp->ex.s : -tp->ex.s, T = tp->lim.cycle_time;
     const tp_region_t *cur = tp_reg_at(tp, tp->ex.reg);
@@ -269,7 +291,7 @@ void tp_window_build(tp_planner_t *tp, tp_window_t *w, double fs, double rs, dou
         double settle = lim_r.jerk > 0.0 && lim_r.jerk < lim_cur.jerk ? settle_j / lim_r.jerk : 0.0;
         if (d < travel + fmax(ramp, settle) && na < TP_WINDOW_MAX) {
             ant[na].s = m.pos;
-            ant[na].v = INFINITY;
+            ant[na].settle_reaches = settle > 0.0 && d < travel + settle_reach(a_pos, lim_r.jerk, v, v_now, a_most, T);
             ant[na].lim.acc = settle_acc(&lim_cur, &lim_r, d - travel, v, v_now, a_most, T);
             ant[na].lim.jerk = lim_r.jerk;
             na++;
