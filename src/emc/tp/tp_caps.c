@@ -11,6 +11,10 @@
 #define TP_CAPS_ROOT_MARGIN (1.0 - 1e-9)
 /* Weight of the speed-change time in the choice of the reserve. */
 #define TP_CAPS_CHANGE_SHARE 0.1
+/* Bisection steps for the top speed of a rest-to-rest crossing. */
+#define TP_CAPS_REST_ITER 40
+/* Bisection steps for the speed of a sinusoidal axis's jerk limit. */
+#define TP_CAPS_PHASE_ITER 50
 
 /* Largest x with k x <= limit over the limited axes that move (INFINITY if none). */
 static double ratio_min(const double *lim, const double *k)
@@ -22,6 +26,16 @@ static double ratio_min(const double *lim, const double *k)
     return m;
 }
 
+/* What a limit leaves for the part in phase with the first derivative when the part a quarter
+ * period apart takes quad: their hypot (phase) or their sum must stay within total; negative when
+ * quad alone exceeds it. */
+static double room(double total, double quad, int phase)
+{
+    if (!phase)
+        return total - quad;
+    return quad > total ? -1.0 : sqrt((total - quad) * (total + quad));
+}
+
 /* Tangential acceleration left at speed v by the curvature terms. */
 static double acc_left(const tp_bounds_t *b, const tp_axlim_t *l, double v)
 {
@@ -29,7 +43,7 @@ static double acc_left(const tp_bounds_t *b, const tp_axlim_t *l, double v)
     for (int i = 0; i < TP_NBOUND; i++) {
         if (!(l->acc[i] > 0.0))
             continue;
-        double rest = l->acc[i] - b->d2[i] * v * v;
+        double rest = room(l->acc[i], b->d2[i] * v * v, b->phase[i]);
         if (rest < 0.0)
             return -1.0;
         if (b->d1[i] > TP_CAPS_TINY)
@@ -45,7 +59,8 @@ static double jerk_left(const tp_bounds_t *b, const tp_axlim_t *l, double v, dou
     for (int i = 0; i < TP_NBOUND; i++) {
         if (!(l->jerk[i] > 0.0))
             continue;
-        double rest = l->jerk[i] - 3.0 * b->d2[i] * v * a - b->d3[i] * v * v * v;
+        double rest = room(l->jerk[i], 3.0 * b->d2[i] * v * a, b->phase[i]);
+        rest = rest < 0.0 ? rest : rest - b->d3[i] * v * v * v;
         if (rest < 0.0)
             return -1.0;
         if (b->d1[i] > TP_CAPS_TINY)
@@ -61,7 +76,7 @@ static double acc_for_jerk(const tp_bounds_t *b, const tp_axlim_t *l, double v, 
     for (int i = 0; i < TP_NBOUND; i++) {
         if (!(l->jerk[i] > 0.0))
             continue;
-        double rest = l->jerk[i] - b->d3[i] * v * v * v - j_keep * b->d1[i];
+        double rest = room(l->jerk[i], b->d3[i] * v * v * v + j_keep * b->d1[i], b->phase[i]);
         if (rest < 0.0)
             return -1.0;
         double k = 3.0 * b->d2[i] * v;
@@ -87,7 +102,7 @@ static void caps_at_speed(const tp_bounds_t *b, const tp_axlim_t *l, double v, i
 {
     double a_line = ratio_min(l->acc, b->d1);
     double j_line = with_jerk ? ratio_min(l->jerk, b->d1) : 0.0;
-    double a_keep = r * a_line, j_keep = with_jerk ? TP_CAPS_RESERVE * j_line : 0.0;
+    double a_keep = r * a_line, j_keep = with_jerk ? TP_CAPS_JERK_RESERVE * j_line : 0.0;
     out->v = v;
     out->a = fmin(usable_acc(b, l, v, with_jerk, j_keep), a_line);
     if (!(out->a > 0.0))
@@ -99,6 +114,26 @@ static void caps_at_speed(const tp_bounds_t *b, const tp_axlim_t *l, double v, i
     out->a_rest = with_jerk || !(a_line > out->a) ? out->a : a_line;
 }
 
+/* Highest speed v at which hypot(d3 v^3 + d1 j_keep, 3 d2 v a_keep) stays within axis i's jerk
+ * limit (increasing in v): bisection from the root of the sum, which lies below it, to the speed the
+ * in-phase part alone allows. */
+static double phase_jerk_root(const tp_bounds_t *b, const tp_axlim_t *l, int i, double a_keep,
+                              double j_keep, double lo)
+{
+    double J = l->jerk[i], in0 = b->d1[i] * j_keep, c = 3.0 * b->d2[i] * a_keep;
+    double hi = cbrt(fmax(J - in0, 0.0) / b->d3[i]);
+    if (!(hi > lo))
+        return lo;
+    for (int k = 0; k < TP_CAPS_PHASE_ITER; k++) {
+        double mid = 0.5 * (lo + hi);
+        if (hypot(b->d3[i] * mid * mid * mid + in0, c * mid) <= J)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    return lo;
+}
+
 /* Highest speed at which every axis leaves a_keep of tangential acceleration and j_keep of
  * tangential jerk: per axis d2 v^2 <= A - a_keep d1 and d3 v^3 + 3 d2 a_keep v <= J - j_keep d1,
  * both increasing in v, so each has one root in closed form; -1 when even rest is too fast. */
@@ -108,22 +143,25 @@ static double speed_keeping(const tp_bounds_t *b, const tp_axlim_t *l, int with_
     double v = INFINITY;
     for (int i = 0; i < TP_NBOUND; i++) {
         if (l->acc[i] > 0.0) {
-            double room = l->acc[i] - (b->d1[i] > TP_CAPS_TINY ? a_keep * b->d1[i] : 0.0);
-            if (room < 0.0)
+            double rest = room(l->acc[i], b->d1[i] > TP_CAPS_TINY ? a_keep * b->d1[i] : 0.0, b->phase[i]);
+            if (rest < 0.0)
                 return -1.0;
             if (b->d2[i] > 0.0)
-                v = fmin(v, sqrt(room / b->d2[i]));
+                v = fmin(v, sqrt(rest / b->d2[i]));
         }
         if (!with_jerk || !(l->jerk[i] > 0.0))
             continue;
-        double room = l->jerk[i] - j_keep * b->d1[i];
+        double rest = l->jerk[i] - j_keep * b->d1[i];
         double c = 3.0 * b->d2[i] * a_keep;
-        if (room < 0.0)
+        if (rest < 0.0)
             return -1.0;
-        if (b->d3[i] > 0.0)
-            v = fmin(v, tp_cubic_root(c / b->d3[i], -room / b->d3[i]));
-        else if (c > 0.0)
-            v = fmin(v, room / c);
+        if (b->d3[i] > 0.0) {
+            double root = tp_cubic_root(c / b->d3[i], -rest / b->d3[i]);
+            v = fmin(v, b->phase[i] ? phase_jerk_root(b, l, i, a_keep, j_keep, root) : root);
+        } else if (c > 0.0) {
+            v = fmin(v, b->phase[i] ? sqrt((l->jerk[i] - j_keep * b->d1[i]) * (l->jerk[i] + j_keep * b->d1[i])) / c
+                                    : rest / c);
+        }
     }
     return v;
 }
@@ -135,7 +173,7 @@ static void caps_with_reserve(const tp_bounds_t *b, const tp_axlim_t *l, double 
     double a_line = ratio_min(l->acc, b->d1);
     double j_line = with_jerk ? ratio_min(l->jerk, b->d1) : 0.0;
     double a_keep = r * a_line;
-    double j_keep = with_jerk ? TP_CAPS_RESERVE * j_line : 0.0;
+    double j_keep = with_jerk ? TP_CAPS_JERK_RESERVE * j_line : 0.0;
     double v_hi = fmin(ratio_min(l->vel, b->d1), v_need);
     if (!isfinite(v_hi))
         v_hi = 1e9;
@@ -144,7 +182,7 @@ static void caps_with_reserve(const tp_bounds_t *b, const tp_axlim_t *l, double 
         /* closed form: |d1| a_keep + |d2| v^2 <= A on every axis */
         for (int i = 0; i < TP_NBOUND; i++)
             if (l->acc[i] > 0.0 && b->d2[i] > TP_CAPS_TINY)
-                v = fmin(v, sqrt(fmax(0.0, l->acc[i] - a_keep * b->d1[i]) / b->d2[i]));
+                v = fmin(v, sqrt(fmax(0.0, room(l->acc[i], a_keep * b->d1[i], b->phase[i])) / b->d2[i]));
     } else if (usable_acc(b, l, v_hi, with_jerk, j_keep) < a_keep) {
         /* a cap is never zero: a region that may not be crossed would stall the executor */
         double root = speed_keeping(b, l, with_jerk, a_keep, j_keep) * TP_CAPS_ROOT_MARGIN;
@@ -162,21 +200,61 @@ static double caps_cost(const tp_caps_t *c, double len)
     return len / c->v + TP_CAPS_CHANGE_SHARE * c->v / c->a;
 }
 
+/* Time to speed up from rest to v with acceleration a and jerk j (0 = none), and the distance. */
+static double rise_time(double v, double a, double j, double *dist)
+{
+    double t = v / a;
+    if (j > 0.0)
+        t = v * j >= a * a ? v / a + a / j : 2.0 * sqrt(v / j);
+    *dist = 0.5 * v * t;                /* the profile is point-symmetric about its middle */
+    return t;
+}
+
+/* Time to cross a piece of length len with caps c from rest (ends 1) or from rest to rest (ends 2):
+ * up to the cap (and down again), or, when too short for that, to the highest speed it leaves room
+ * for (bisection). */
+double tp_caps_rest_time(const tp_caps_t *c, double len, int ends)
+{
+    double d, t = rise_time(c->v, c->a, c->j, &d);
+    if (ends * d <= len)
+        return ends * t + (len - ends * d) / c->v;
+    double lo = 0.0, hi = c->v;
+    for (int k = 0; k < TP_CAPS_REST_ITER; k++) {
+        double mid = 0.5 * (lo + hi);
+        rise_time(mid, c->a, c->j, &d);
+        if (ends * d <= len)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    return ends * rise_time(lo, c->a, c->j, &d);
+}
+
+/* Estimated time of a piece with caps c: from or to rest when rest_ends of its ends are stops, else
+ * the rough crossing time. */
+static double piece_cost(const tp_caps_t *c, double len, int rest_ends)
+{
+    if (!(c->v > 0.0) || !(c->a > 0.0))
+        return INFINITY;
+    return rest_ends > 0 ? tp_caps_rest_time(c, len, rest_ends) : caps_cost(c, len);
+}
+
 /* Compute the caps.  A sharply curved piece spends most of the limits on its curvature: keeping a
  * smaller share for speed changes raises its speed, which pays on short pieces (the speed then
- * changes mostly outside them); the share with the least estimated time wins. */
+ * changes mostly outside them); the share with the least estimated time wins.  A piece that starts
+ * or ends at rest (rest_ends of its ends) changes its speed inside: its time is estimated as such. */
 void tp_caps_compute(const tp_bounds_t *b, const tp_axlim_t *l, double v_need, int with_jerk,
-                     double len, tp_caps_t *out)
+                     double len, int rest_ends, tp_caps_t *out)
 {
     static const double reserve[] = {TP_CAPS_RESERVE, TP_CAPS_RESERVE / 4.0, TP_CAPS_RESERVE / 16.0};
     caps_with_reserve(b, l, v_need, with_jerk, reserve[0], out);
     if (out->v >= fmin(ratio_min(l->vel, b->d1), v_need))
         return;                         /* not held back by the curvature: nothing to gain */
-    double best = caps_cost(out, len);
+    double best = piece_cost(out, len, rest_ends);
     for (int k = 1; k < (int)(sizeof(reserve) / sizeof(reserve[0])); k++) {
         tp_caps_t c;
         caps_with_reserve(b, l, v_need, with_jerk, reserve[k], &c);
-        double cost = caps_cost(&c, len);
+        double cost = piece_cost(&c, len, rest_ends);
         if (!(c.v > out->v) || !(cost < best))
             break;
         *out = c;

@@ -24,10 +24,17 @@ typedef struct tp_caps {
 /* Share of the straight-line acceleration and jerk a curved piece keeps for speed changes (the
  * rest goes to curvature); a quarter or a sixteenth of it when that makes a short piece faster. */
 #define TP_CAPS_RESERVE 0.25
+/* Share of the straight-line jerk a curved piece keeps for speed changes: its speed changes take
+ * longer the less it keeps, its cap drops the more it keeps (0.35 is the best of the bench's
+ * programs at 0.05 steps). */
+#define TP_CAPS_JERK_RESERVE 0.35
 
 /* Caps of a piece of length len with derivative bounds b, wanting speed up to v_need;
- * with_jerk 0 = trapezoid. */
+ * with_jerk 0 = trapezoid; rest_ends: how many of its ends (0..2) are stops. */
 void tp_caps_compute(const tp_bounds_t *b, const tp_axlim_t *lim, double v_need, int with_jerk,
-                     double len, tp_caps_t *out);
+                     double len, int rest_ends, tp_caps_t *out);
+/* Time to cross len within caps c (speed, acceleration, jerk 0 = none) from rest (ends 1) or from
+ * rest to rest (ends 2). */
+double tp_caps_rest_time(const tp_caps_t *c, double len, int ends);
 
 #endif

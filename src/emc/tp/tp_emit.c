@@ -120,7 +120,11 @@ static void piece_region(tp_planner_t *tp, const tp_geo_t *g, double u0, double 
     tp_bounds_t b;
     tp_caps_t c;
     tp_geo_bounds(g, u0, u1, &b);
-    tp_caps_compute(&b, lim, need_speed(tp, owner), tp->type == TP_PLANNER_SCURVE, u1 - u0, &c);
+    /* an arc's body that starts or ends at a stop changes its speed inside it */
+    int rest = 0;
+    if (g == &owner->geo && g->kind == TP_GEO_ARC)
+        rest = (owner->jct_in == TP_JCT_STOP) + (owner->jct_out == TP_JCT_STOP);
+    tp_caps_compute(&b, lim, need_speed(tp, owner), tp->type == TP_PLANNER_SCURVE, u1 - u0, rest, &c);
     if (!isfinite(c.v))
         c.v = 1e9;
     memset(r, 0, sizeof(*r));

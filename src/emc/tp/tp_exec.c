@@ -44,6 +44,9 @@ static double settle_now(const tp_window_t *w, int k, double s, const tp_state1_
         while (n < w->n && w->t[n].s < end) {
             if (v_end > w->t[n].v * (1.0 + 1e-10 + loose * 1e-8) + 1e-12)
                 return -1.0;
+            /* crossing a target still accelerating: no faster than the span after it allows */
+            if (n + 1 < w->n && st->a > w->t[n + 1].lim.acc * (1.0 + loose * 1e-9))
+                return -1.0;
             n++;
             if (n < w->n && w->t[n].lim.jerk > 0.0 && w->t[n].lim.jerk < lim.jerk) {
                 lim.jerk = w->t[n].lim.jerk;
@@ -83,6 +86,21 @@ static int momentum_ok(const tp_window_t *w, int k, double s, const tp_state1_t 
     return v_end <= tp_chain_vmax(tm->v, tm->s - x, &tm->lim) * (1.0 + loose * 1e-9);
 }
 
+/* A state standing on target k carries its acceleration into the span after it: no more than that
+ * span allows, and settled with its jerk without passing the target's speed. */
+static int crossing_ok(const tp_window_t *w, int k, const tp_state1_t *cur, double loose)
+{
+    if (cur->a <= 0.0 || k + 1 >= w->n)
+        return 1;
+    const tp_lim1_t *next = &w->t[k + 1].lim;
+    if (cur->a > next->acc * (1.0 + loose * 1e-9))
+        return 0;
+    if (!(next->jerk > 0.0))
+        return 1;
+    double v_end = cur->v + cur->a * cur->a / (2.0 * next->jerk);
+    return v_end <= w->t[k].v * (1.0 + 1e-10 + loose * 1e-8) + 1e-12;
+}
+
 /* Can the state st (st.s into the sub-step from s_now) still meet the targets?  The nearest target
  * must be reachable; the backward pass made the later ones reachable from it at rest acceleration,
  * so a state that would carry acceleration into a later, slower target settles it first.  When
@@ -105,6 +123,8 @@ static int safe_at(const tp_window_t *w, int ti, double s_now, const tp_state1_t
              * left before it is braked with its own limits) */
             s = fmax(s, t->s);
             cur.v = fmin(cur.v, t->v);
+            if (!crossing_ok(w, k, &cur, loose))
+                return 0;
             continue;
         }
         return need <= rem + loose * sl && momentum_ok(w, k, s, &cur, loose);

@@ -280,6 +280,11 @@ static void arc_bounds(const tp_geo_t *g, tp_bounds_t *b)
     b->d1[TP_PATH_AX] = hypot(w1, ax);
     b->d2[TP_PATH_AX] = w2;
     b->d3[TP_PATH_AX] = w3;
+    if (rho > 0.0)
+        return;                         /* a spiral: its radius changes, the generic sums hold */
+    for (int i = 0; i < 3; i++)         /* in the plane only: an axial part moves linearly */
+        b->phase[i] = !(fabs(a->n[i]) * ax > 0.0 && hypot(a->e1[i], a->e2[i]) > 0.0);
+    b->phase[TP_PATH_AX] = 1;
 }
 
 /* de Casteljau restriction of a degree-n polynomial (one axis, control values c) to [u0, u1]. */
@@ -354,6 +359,7 @@ static void quintic_bounds(const tp_geo_t *g, double s0, double s1, tp_bounds_t 
             p[nax][k] = g->u.q.b[k].x[i];
         ax[nax++] = i;
     }
+    memset(b->phase, 0, sizeof(b->phase));
     order_bounds(p, d1, 5, nax, ax, mq, u0, u1, 1.0 / L, b->d1);
     order_bounds(d1, d2, 4, nax, ax, mq, u0, u1, 1.0 / (L * L), b->d2);
     order_bounds(d2, d3, 3, nax, ax, mq, u0, u1, 1.0 / (L * L * L), b->d3);

@@ -57,6 +57,10 @@ typedef struct tp_bounds {
     double d1[TP_NBOUND];
     double d2[TP_NBOUND];
     double d3[TP_NBOUND];
+    /* 1 where the coordinate runs as a sinusoid of the length (an axis in the plane of a circle or
+     * helix, or the path itself): its first and third derivatives peak a quarter period from its
+     * second, so in the acceleration and jerk the parts they carry add as a hypot, not a sum */
+    unsigned char phase[TP_NBOUND];
 } tp_bounds_t;
 
 /* Make a line from start to end; 0, or -1 when it has no length in any metric. */

@@ -12,8 +12,11 @@
 /* Share of the tolerance the blend sizing aims at; the rest covers estimate errors. */
 #define TP_TOL_SHARE 0.95
 #define TP_BLEND_TRIES 4
-/* Turns above this (rad) are corners: blends on both sides of a move meet without curvature. */
+/* Turns below this (rad) always blend: the S-curve rule that may stop at a corner leaves them. */
 #define TP_TILE_MAX_TURN 0.35
+/* Turns above this (rad) are corners: blends on both sides of a move meet without curvature (below
+ * it a sampled curve, however coarse: the deviation check still bounds the curvature carried). */
+#define TP_TILE_CURVE_TURN 0.7
 /* Blends are sized for the wanted speed with this margin, using these shares of the limits. */
 #define TP_WANT_MARGIN 2.5
 #define TP_WANT_ACC_SHARE 0.2
@@ -226,7 +229,7 @@ static void tile_curvature(tp_seg_t *a, tp_seg_t *b, tp_seg_t *c)
     tp_corner_t c1, c2;
     tp_corner_describe(&c1, &a->geo, &b->geo);
     tp_corner_describe(&c2, &b->geo, &c->geo);
-    if (c1.theta > TP_TILE_MAX_TURN || c2.theta > TP_TILE_MAX_TURN)
+    if (c1.theta > TP_TILE_CURVE_TURN || c2.theta > TP_TILE_CURVE_TURN)
         return;                         /* corners, not a sampled curve: meet without curvature */
     tp_vec_t k1 = vertex_curvature(a, b), k2 = vertex_curvature(b, c);
     k1 = tp_vec_axpy(&k1, -tp_vec_dot(&k1, u) / uu, u);

@@ -6,6 +6,10 @@
 #define TP_UNIT_MAX 64
 /* Share of the tolerance the merged line may stray from the moves' end points. */
 #define TP_UNIT_TOL_SHARE 0.25
+/* Without G64 P: share of the shorter neighbouring move a vertex may stray from the merged line
+ * (less than the blends' quarter: shorter units leave the blends room to share whole units, so a
+ * sampled curve runs curvature-continuous). */
+#define TP_UNIT_FREE_SHARE 0.2
 /* Without G64 P, runs merge only where every vertex turns less than this (rad). */
 #define TP_UNIT_FREE_TURN 0.35
 
@@ -53,7 +57,7 @@ static double vertex_allowance(const tp_seg_t *h, const tp_vec_t *prev, const tp
     double la = sqrt(tp_vec_dot(&a, &a)), lb = sqrt(tp_vec_dot(&b, &b));
     if (!(la > 0.0) || !(lb > 0.0) || tp_vec_dot(&a, &b) < cos(TP_UNIT_FREE_TURN) * la * lb)
         return -1.0;
-    return TP_UNIT_TOL_SHARE * fmin(la, lb);
+    return TP_UNIT_FREE_SHARE * fmin(la, lb);
 }
 
 /* Distance from point p to the line through a with unit direction d (nine axes), and the projection. */

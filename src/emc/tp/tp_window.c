@@ -142,6 +142,59 @@ static void anticipate(tp_window_t *w, double s0, double acc, double jerk)
         }
 }
 
+/* A region to anticipate: where it starts, the limits to anticipate, and whether settling the
+ * acceleration the cycle may end with, with its jerk, would reach it. */
+typedef struct ant {
+    double s;
+    tp_lim1_t lim;
+    int settle_reaches;
+} ant_t;
+
+/* Anticipate the regions noted in ant that lie before the first speed target.  From that target on
+ * the targets' limits bind a state approaching: the executor brakes onto a target at rest
+ * acceleration, or crosses it with no more acceleration than the span after it allows and settles
+ * it with that span's jerk (momentum_ok); anticipating those regions as well would hold back the
+ * speed-up all the way to them.  Only their smaller jerk is anticipated once settling the
+ * acceleration under way would reach them: a brake begun just before a target may still carry
+ * acceleration across it. */
+static void anticipate_untargeted(tp_window_t *w, const ant_t *ant, int na, double s)
+{
+    int ti = 0;                         /* a target the executor stands on is behind it */
+    while (ti < w->n && w->t[ti].s - s <= 1e-6 + 1e-9 * fabs(w->t[ti].s))
+        ti++;
+    for (int k = 0; k < na; k++) {
+        if (ti >= w->n || ant[k].s < w->t[ti].s)
+            anticipate(w, ant[k].s, ant[k].lim.acc, ant[k].lim.jerk);
+        else if (ant[k].settle_reaches)
+            anticipate(w, ant[k].s, INFINITY, ant[k].lim.jerk);
+    }
+}
+
+/* How far settling acceleration a_pos with jerk j takes, at the speed the executor can reach by
+ * then (from v_now, accelerating at most at a_most, never above v), with a margin of 1.5. */
+static double settle_reach(double a_pos, double j, double v, double v_now, double a_most, double T)
+{
+    double t = a_pos / j;
+    return 1.5 * (fmin(v, v_now + a_most * (T + t)) + a_pos * T) * t;
+}
+
+/* Acceleration from which the executor can still settle to lim_r's before a region dist ahead
+ * (what the cycle travels already taken off): at most the settling time (jerk of the smaller of
+ * the two limits) times the speed it can reach by then (from v_now, accelerating at most at a_most,
+ * never above v), with a margin of 1.5.  Near the region it is the region's own acceleration; far
+ * from it the executor keeps its own. */
+static double settle_acc(const tp_lim1_t *lim_cur, const tp_lim1_t *lim_r, double dist, double v,
+                         double v_now, double a_most, double T)
+{
+    double j = lim_r->jerk > 0.0 && lim_cur->jerk > 0.0 ? fmin(lim_r->jerk, lim_cur->jerk) : 0.0;
+    if (!(j > 0.0) || !(dist > 0.0))
+        return lim_r->acc;
+    double t_settle = (a_most + lim_cur->acc) / j;
+    double v_settle = fmin(v, v_now + a_most * (T + t_settle));
+    if (!(v_settle > 0.0))
+        return lim_cur->acc;
+    return lim_r->acc + j * dist / (1.5 * v_settle);
+}
 
 /* A region the executor meets walking in direction dir: where it enters it (backwards positions
  * are -s), whether a stop lies at that point, whether it may enter at all (reverse run cannot run
@@ -192,7 +245,8 @@ static double path_end(tp_planner_t *tp, int dir, const meet_t *last, int have_l
 void tp_window_build(tp_planner_t *tp, tp_window_t *w, double fs, double rs, double spindle_rps, int dir)
 {
     valley_t vl[TP_WINDOW_MAX + 1];
-    int n = 0;
+    ant_t ant[TP_WINDOW_MAX];           /* regions to anticipate */
+    int n = 0, na = 0;
     double s = dir > 0 ? tp->ex.s : -tp->ex.s, T = tp->lim.cycle_time;
     const tp_region_t *cur = tp_reg_at(tp, tp->ex.reg);
     double cur_end = dir > 0 ? cur->s0 + cur->len : -cur->s0;
@@ -204,6 +258,7 @@ void tp_window_build(tp_planner_t *tp, tp_window_t *w, double fs, double rs, dou
     double v = fmax(tp->ex.v, fmin(cap_cur, 1e9));
     double travel = (v + lim_cur.acc * T) * T * 1.5 + 1e-12;
     double ramp = lim_cur.jerk > 0.0 ? v * (fabs(tp->ex.a) + lim_cur.acc) / lim_cur.jerk * 1.5 : 0.0;
+    double v_now = tp->ex.v, a_most = fmax(fmax(tp->ex.a, 0.0) + lim_cur.jerk * T, lim_cur.acc);
     /* the most positive acceleration the cycle can end with, and how far settling it takes per
      * unit of the jerk it settles with */
     double a_pos = fmax(tp->ex.a, 0.0) + lim_cur.jerk * T;
@@ -217,7 +272,7 @@ void tp_window_build(tp_planner_t *tp, tp_window_t *w, double fs, double rs, dou
     tp_lim1_t before = lim_cur;
     /* a region start limits nothing unless its cap is below every speed allowed before it */
     double v_before = fmax(tp->ex.v, cap_cur);
-    meet_t m;
+    meet_t m = {NULL, 0.0, 0, 0};
     int have = 0, more;
     uint64_t k = 1;
     for (; (more = meet_region(tp, dir, k, &m)) && !m.blocked && n < TP_WINDOW_MAX; k++) {
@@ -234,8 +289,13 @@ void tp_window_build(tp_planner_t *tp, tp_window_t *w, double fs, double rs, dou
         /* a region of smaller jerk is anticipated from as far as settling an acceleration under way
          * takes with its jerk */
         double settle = lim_r.jerk > 0.0 && lim_r.jerk < lim_cur.jerk ? settle_j / lim_r.jerk : 0.0;
-        if (d < travel + fmax(ramp, settle))
-            anticipate(w, m.pos, lim_r.acc, lim_r.jerk);
+        if (d < travel + fmax(ramp, settle) && na < TP_WINDOW_MAX) {
+            ant[na].s = m.pos;
+            ant[na].settle_reaches = settle > 0.0 && d < travel + settle_reach(a_pos, lim_r.jerk, v, v_now, a_most, T);
+            ant[na].lim.acc = settle_acc(&lim_cur, &lim_r, d - travel, v, v_now, a_most, T);
+            ant[na].lim.jerk = lim_r.jerk;
+            na++;
+        }
         vl[n].s = m.pos;
         vl[n].v = limit;
         vl[n].cap = cap;
@@ -258,6 +318,7 @@ void tp_window_build(tp_planner_t *tp, tp_window_t *w, double fs, double rs, dou
         vl[n - 1].stop = 0;
     }
     reduce(w, vl, n, lim_cur);
+    anticipate_untargeted(w, ant, na, s);
 }
 
 /* Keep the executor on targets it is safe with: when the fresh targets (built from a longer view or

@@ -151,8 +151,75 @@ static void caps_line(void)
     }
     l.vel[1] = 2.0;
     tp_caps_t c;
-    tp_caps_compute(&b, &l, 1e9, 0, 1.0, &c);
+    tp_caps_compute(&b, &l, 1e9, 0, 1.0, 0, &c);
     printf("line (3,4) caps: speed %.4f acceleration %.4f\n", c.v, c.a);
+}
+
+/* Caps of a circle: its in-plane axes and the path run as sinusoids, so the curvature and speed-change
+ * parts of their acceleration and jerk add as a hypot.  The caps hold sampled around the circle for
+ * every sign of the tangential acceleration and jerk, and allow more than the sum bound would. */
+static void caps_circle(void)
+{
+    tp_geo_t g;
+    tp_vec_t p0 = {{1, 0, 0}}, p1 = {{-1, 0, 0}};
+    const double centre[3] = {0, 0, 0}, normal[3] = {0, 0, 1}, A = 5000.0, J = 2e5;
+    CHECK(tp_geo_arc(&g, &p0, &p1, centre, normal, 0) == 0, "circle not built");
+    tp_bounds_t b;
+    tp_geo_bounds(&g, 0.0, g.len, &b);
+    tp_axlim_t l;
+    memset(&l, 0, sizeof(l));
+    for (int i = 0; i < 3; i++) {
+        l.vel[i] = 500.0;
+        l.acc[i] = A;
+        l.jerk[i] = J;
+    }
+    l.acc[TP_PATH_AX] = A;
+    l.jerk[TP_PATH_AX] = J;
+    tp_caps_t c, sum;
+    tp_caps_compute(&b, &l, 1e9, 1, g.len, 0, &c);
+    memset(b.phase, 0, sizeof(b.phase));
+    tp_caps_compute(&b, &l, 1e9, 1, g.len, 0, &sum);
+    double worst_a = 0.0, worst_j = 0.0, v = c.v;
+    for (int k = 0; k < 720; k++) {
+        double ps = 2.0 * M_PI * k / 720.0, sn = sin(ps), cs = cos(ps);
+        for (int q = 0; q < 4; q++) {
+            double a = q & 1 ? -c.a : c.a, j = q & 2 ? -c.j : c.j;
+            /* x = cos(s): x' = -sin, x'' = -cos, x''' = sin (radius 1) */
+            worst_a = fmax(worst_a, fabs(-cs * v * v - sn * a) / A);
+            worst_j = fmax(worst_j, fabs(sn * v * v * v - 3.0 * cs * v * a - sn * j) / J);
+            worst_a = fmax(worst_a, hypot(a, v * v) / A);
+            worst_j = fmax(worst_j, hypot(j - v * v * v, 3.0 * v * a) / J);
+        }
+    }
+    CHECK(worst_a <= 1.0 + 1e-9 && worst_j <= 1.0 + 1e-9, "circle caps exceed the limits: %g %g", worst_a, worst_j);
+    CHECK(c.v > sum.v, "circle caps %g not above the sum bound's %g", c.v, sum.v);
+    printf("circle R1 caps: speed %.3f (sum bound %.3f), within the limits around it\n", c.v, sum.v);
+}
+
+/* Rest-to-rest and from-rest crossing times of a piece (the estimate caps use to choose how much
+ * acceleration a curved piece keeps): closed forms for reaching the cap, and pieces too short for
+ * it; the time grows with the length and falls with the limits. */
+static void rest_times(void)
+{
+    tp_caps_t trap = {10.0, 100.0, 0.0, 100.0}, sc = {10.0, 100.0, 1000.0, 100.0};
+    printf("rest to rest over 10 (trapezoid): %.6f, from rest: %.6f\n", tp_caps_rest_time(&trap, 10.0, 2),
+           tp_caps_rest_time(&trap, 10.0, 1));
+    printf("rest to rest over 0.25 (trapezoid): %.6f\n", tp_caps_rest_time(&trap, 0.25, 2));
+    printf("rest to rest over 10 (S-curve): %.6f, over 0.002: %.6f\n", tp_caps_rest_time(&sc, 10.0, 2),
+           tp_caps_rest_time(&sc, 0.002, 2));
+    int bad = 0;
+    for (int k = 0; k < 2000; k++) {
+        tp_caps_t c = {1.0 + 99.0 * urand(), 10.0 + 990.0 * urand(), urand() < 0.3 ? 0.0 : 100.0 + 1e5 * urand(), 0.0};
+        double len = 1e-3 + 10.0 * urand();
+        int ends = 1 + (urand() < 0.5);
+        double t = tp_caps_rest_time(&c, len, ends), t_long = tp_caps_rest_time(&c, 1.1 * len, ends);
+        tp_caps_t more = c;
+        more.a *= 1.5;
+        bad += !(t > 0.0) || !(t_long > t) || !(tp_caps_rest_time(&more, len, ends) <= t * (1.0 + 1e-9)) ||
+               !(t >= len / c.v);
+    }
+    CHECK(bad == 0, "%d crossing times not monotonic", bad);
+    printf("rest times: 2000 random pieces, %d not monotonic\n", bad);
 }
 
 /* The speed a blend of a given cut allows and the cut a speed needs are inverses, and the blend's
@@ -186,6 +253,8 @@ int main(void)
     profile_random(20000);
     braking_consistency(20000);
     caps_line();
+    rest_times();
+    caps_circle();
     blend_corner(90.0, 0.01);
     blend_corner(10.0, 0.001);
     blend_corner(170.0, 0.05);
