@@ -10,8 +10,8 @@
 /* Short pieces whose speed caps differ by more than this factor stay apart (trapezoid, S-curve)
  * when the faster one takes more than a cycle at the slower cap: a short straight between two slow
  * blends can speed up in between. */
-#define TP_REGION_APART 1.5
-#define TP_REGION_APART_JERK 5.0
+#define TP_REGION_APART 2.0
+#define TP_REGION_APART_JERK 8.0
 /* Elements a single add may need (blend halves, body, fallback pieces, a unit's moves). */
 #define TP_EMIT_PER_ADD TP_EMIT_SPACE
 
