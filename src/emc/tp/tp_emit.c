@@ -7,11 +7,10 @@
 #define TP_CAP_STEPS 64.0
 /* A region aims at 1/TP_REGION_SHARE of the braking distance at its speed. */
 #define TP_REGION_SHARE 24.0
-/* Short pieces whose speed caps differ by more than this factor stay apart (trapezoid, S-curve)
- * when the faster one takes more than a cycle at the slower cap: a short straight between two slow
- * blends can speed up in between. */
+/* Trapezoid mode: short pieces whose speed caps differ by more than this factor stay apart when
+ * the faster one takes more than a cycle at the slower cap, so a short straight between two slow
+ * blends can speed up in between (S-curve speed changes need more room than such pieces give). */
 #define TP_REGION_APART 2.0
-#define TP_REGION_APART_JERK 8.0
 /* Elements a single add may need (blend halves, body, fallback pieces, a unit's moves). */
 #define TP_EMIT_PER_ADD TP_EMIT_SPACE
 
@@ -77,11 +76,10 @@ static void region_add(tp_planner_t *tp, const tp_region_t *piece)
                          fabs(r->s0 + r->len - piece->s0) <= 1e-9 * (1.0 + fabs(piece->s0));
         int short_r = r->len < region_reach(tp, r);
         int short_p = piece->len < region_reach(tp, piece);
-        /* a jerk-limited speed change needs more room: only a large gap pays for a region */
-        double ratio = tp->type == TP_PLANNER_SCURVE ? TP_REGION_APART_JERK : TP_REGION_APART;
         const tp_region_t *fast = piece->v_mach > r->v_mach ? piece : r;
         double slow = fmin(piece->v_mach, r->v_mach);
-        int apart = fast->v_mach > ratio * slow && fast->len > slow * tp->lim.cycle_time;
+        int apart = tp->type != TP_PLANNER_SCURVE && fast->v_mach > TP_REGION_APART * slow &&
+                    fast->len > slow * tp->lim.cycle_time;
         if (compatible && (same || (short_r && short_p && !apart && (faster || region_far(tp, r))))) {
             r->v_mach = fmin(r->v_mach, piece->v_mach);
             r->a = fmin(r->a, piece->a);
