@@ -191,6 +191,13 @@ static void caps_with_reserve(const tp_bounds_t *b, const tp_axlim_t *l, double 
     caps_at_speed(b, l, v, with_jerk, r, out);
 }
 
+/* Caps keeping exactly reserve share r (the caller knows where the speed changes happen). */
+void tp_caps_with_reserve(const tp_bounds_t *b, const tp_axlim_t *l, double v_need, int with_jerk,
+                          double r, tp_caps_t *out)
+{
+    caps_with_reserve(b, l, v_need, with_jerk, r, out);
+}
+
 /* Rough time a piece of length len costs with caps c: crossing it at the cap plus a share of the
  * time to change speed by the cap inside it. */
 static double caps_cost(const tp_caps_t *c, double len)

@@ -29,10 +29,18 @@ typedef struct tp_caps {
  * programs at 0.05 steps). */
 #define TP_CAPS_JERK_RESERVE 0.35
 
+/* Share a parabolic corner blend keeps when the straight moves on both sides have room for the
+ * speed changes around it (trapezoid planning): it then runs at one parameter speed while the
+ * lines brake and speed up, and the acceleration it does not keep turns it faster. */
+#define TP_CAPS_RESERVE_CORNER 0.02
+
 /* Caps of a piece of length len with derivative bounds b, wanting speed up to v_need;
  * with_jerk 0 = trapezoid; rest_ends: how many of its ends (0..2) are stops. */
 void tp_caps_compute(const tp_bounds_t *b, const tp_axlim_t *lim, double v_need, int with_jerk,
                      double len, int rest_ends, tp_caps_t *out);
+/* Caps keeping exactly reserve share r of the straight-line acceleration (no choice of share). */
+void tp_caps_with_reserve(const tp_bounds_t *b, const tp_axlim_t *lim, double v_need, int with_jerk,
+                          double r, tp_caps_t *out);
 /* Time to cross len within caps c (speed, acceleration, jerk 0 = none) from rest (ends 1) or from
  * rest to rest (ends 2). */
 double tp_caps_rest_time(const tp_caps_t *c, double len, int ends);

@@ -110,10 +110,11 @@ static void lim_min(tp_axlim_t *out, const tp_axlim_t *a, const tp_axlim_t *b)
     }
 }
 
-/* Region describing a piece: caps from the derivative bounds, feed from the owner. */
+/* Region describing a piece: caps from the derivative bounds, feed from the owner; reserve > 0
+ * fixes the share kept for speed changes, 0 lets the caps choose it. */
 static void piece_region(tp_planner_t *tp, const tp_geo_t *g, double u0, double u1,
                          const tp_axlim_t *lim, const tp_seg_t *owner, uint32_t flags,
-                         tp_region_t *r)
+                         double reserve, tp_region_t *r)
 {
     tp_bounds_t b;
     tp_caps_t c;
@@ -122,7 +123,10 @@ static void piece_region(tp_planner_t *tp, const tp_geo_t *g, double u0, double 
     int rest = 0;
     if (g == &owner->geo && g->kind == TP_GEO_ARC)
         rest = (owner->jct_in == TP_JCT_STOP) + (owner->jct_out == TP_JCT_STOP);
-    tp_caps_compute(&b, lim, need_speed(tp, owner), tp->type == TP_PLANNER_SCURVE, u1 - u0, rest, &c);
+    if (reserve > 0.0)
+        tp_caps_with_reserve(&b, lim, need_speed(tp, owner), tp->type == TP_PLANNER_SCURVE, reserve, &c);
+    else
+        tp_caps_compute(&b, lim, need_speed(tp, owner), tp->type == TP_PLANNER_SCURVE, u1 - u0, rest, &c);
     if (!isfinite(c.v))
         c.v = 1e9;
     memset(r, 0, sizeof(*r));
@@ -166,7 +170,7 @@ static void emit_elem(tp_planner_t *tp, tp_seg_t *owner, tp_seg_t *geo_seg, int 
         return;
     const tp_geo_t *g = is_blend ? &geo_seg->blend : &geo_seg->geo;
     tp_region_t r;
-    piece_region(tp, g, u0, u1, lim, owner, flags, &r);
+    piece_region(tp, g, u0, u1, lim, owner, flags, 0.0, &r);
     tp_emit_region(tp, owner, geo_seg, is_blend, u0, u1, &r);
 }
 
@@ -202,7 +206,7 @@ void tp_emit_region(tp_planner_t *tp, tp_seg_t *owner, tp_seg_t *geo_seg, int is
 void tp_emit_caps(tp_planner_t *tp, tp_seg_t *owner, const tp_geo_t *g, double u0, double u1,
                   const tp_axlim_t *lim, uint32_t flags, tp_region_t *r)
 {
-    piece_region(tp, g, u0, u1, lim, owner, flags, r);
+    piece_region(tp, g, u0, u1, lim, owner, flags, 0.0, r);
 }
 
 /* Emit part [u0, u1] of a segment's own move. */
@@ -212,13 +216,29 @@ void tp_emit_piece(tp_planner_t *tp, tp_seg_t *owner, tp_seg_t *geo_seg, int is_
     emit_elem(tp, owner, geo_seg, is_blend, u0, u1, &owner->lim, flags);
 }
 
+/* Share of the acceleration the pieces of the blend a -> b keep for speed changes (0: their caps
+ * choose).  A parabolic (trapezoid) blend whose moves leave straight room on both sides to brake
+ * from the speed wanted to rest changes its speed on those lines, not inside: it keeps a token. */
+static double blend_reserve(const tp_planner_t *tp, const tp_seg_t *a, const tp_seg_t *b)
+{
+    if (tp->type == TP_PLANNER_SCURVE || a->wf_out.shape != TP_BLEND_G1)
+        return 0.0;
+    double acc = fmin(a->lim.acc[TP_PATH_AX], b->lim.acc[TP_PATH_AX]);
+    double v = a->wf_out.v_need;
+    if (!(acc > 0.0) || !isfinite(v))
+        return 0.0;
+    double room = v * v / (2.0 * acc);
+    double a_line = a->geo.len - a->cut_in - a->cut_out, b_line = b->geo.len - b->cut_in - b->cut_out;
+    return a_line >= room && b_line >= room ? TP_CAPS_RESERVE_CORNER : 0.0;
+}
+
 /* Emit the blend stored in a (from a into b): first half owned by a_owner, second by b_owner, each
  * half in TP_BLEND_PIECES / 2 pieces with their own caps (curvature is low near the ends). */
 void tp_emit_blend(tp_planner_t *tp, tp_seg_t *a, tp_seg_t *a_owner, tp_seg_t *b, tp_seg_t *b_owner)
 {
     tp_axlim_t lim;
     tp_region_t r[TP_BLEND_PIECES];
-    double len = a->blend.len, u[TP_BLEND_PIECES + 1], j = INFINITY;
+    double len = a->blend.len, u[TP_BLEND_PIECES + 1], j = INFINITY, reserve = blend_reserve(tp, a, b);
     lim_min(&lim, &a->lim, &b->lim);
     /* the moves' path acceleration and jerk bound speed changes along them; through the corner
      * every axis keeps its own limits, which is what the curve turning between them must obey */
@@ -228,7 +248,7 @@ void tp_emit_blend(tp_planner_t *tp, tp_seg_t *a, tp_seg_t *a_owner, tp_seg_t *b
         u[k] = k == TP_BLEND_PIECES ? len : len * k / TP_BLEND_PIECES;
     for (int k = 0; k < TP_BLEND_PIECES; k++) {
         piece_region(tp, &a->blend, u[k], u[k + 1], &lim, 2 * k < TP_BLEND_PIECES ? a_owner : b_owner,
-                     0, &r[k]);
+                     0, reserve, &r[k]);
         j = fmin(j, r[k].j);
     }
     /* one jerk for the whole blend: pieces of alternating jerk would let an acceleration started
