@@ -11,6 +11,13 @@
  * the faster one takes more than a cycle at the slower cap, so a short straight between two slow
  * blends can speed up in between (S-curve speed changes need more room than such pieces give). */
 #define TP_REGION_APART 2.0
+/* Trapezoid corners whose parabolic blend may keep only a token share for speed changes: turns
+ * from 40 degrees (below: sampled curves, whose blends change speed inside) to 160 degrees (above:
+ * near reversals, where the blend turns along the lines' own axis and their braking runs on into
+ * it), with straight room on each side of at least this many times the blend's cut. */
+#define TP_CORNER_TURN_MIN 0.7
+#define TP_CORNER_TURN_MAX 2.8
+#define TP_CORNER_ROOM_CUTS 4.0
 /* Elements a single add may need (blend halves, body, fallback pieces, a unit's moves). */
 #define TP_EMIT_PER_ADD TP_EMIT_SPACE
 
@@ -125,7 +132,7 @@ static void piece_region(tp_planner_t *tp, const tp_geo_t *g, double u0, double 
         rest = (owner->jct_in == TP_JCT_STOP) + (owner->jct_out == TP_JCT_STOP);
     if (reserve > 0.0)
         tp_caps_with_reserve(&b, lim, need_speed(tp, owner), tp->type == TP_PLANNER_SCURVE, reserve, &c);
-    else
+    if (!(reserve > 0.0) || c.v >= need_speed(tp, owner))
         tp_caps_compute(&b, lim, need_speed(tp, owner), tp->type == TP_PLANNER_SCURVE, u1 - u0, rest, &c);
     if (!isfinite(c.v))
         c.v = 1e9;
@@ -216,20 +223,41 @@ void tp_emit_piece(tp_planner_t *tp, tp_seg_t *owner, tp_seg_t *geo_seg, int is_
     emit_elem(tp, owner, geo_seg, is_blend, u0, u1, &owner->lim, flags);
 }
 
+/* Rough speed through the corner at the far end of a straight part: 0 at a stop, the parabola's
+ * with cut `cut` for a blend the tolerance slows down (G1), else the speed wanted. */
+static double corner_speed(tp_jct_t j, const tp_want_t *w, double cut, double acc, double v_need)
+{
+    if (j == TP_JCT_STOP)
+        return 0.0;
+    if (j != TP_JCT_BLEND || w->shape != TP_BLEND_G1)
+        return v_need;
+    double s = sin(0.5 * w->theta);
+    return s > 0.0 ? fmin(v_need, sqrt(acc * cut / s)) : v_need;
+}
+
 /* Share of the acceleration the pieces of the blend a -> b keep for speed changes (0: their caps
- * choose).  A parabolic (trapezoid) blend whose moves leave straight room on both sides to brake
- * from the speed wanted to rest changes its speed on those lines, not inside: it keeps a token. */
+ * choose).  A parabolic (trapezoid) blend at a corner between TP_CORNER_TURN_MIN and
+ * TP_CORNER_TURN_MAX whose lines leave room on both sides, for the speed change to the
+ * neighbouring corner and TP_CORNER_ROOM_CUTS times its cut, changes its speed on those lines:
+ * it keeps a token share and turns faster. */
 static double blend_reserve(const tp_planner_t *tp, const tp_seg_t *a, const tp_seg_t *b)
 {
-    if (tp->type == TP_PLANNER_SCURVE || a->wf_out.shape != TP_BLEND_G1)
+    const tp_want_t *w = &a->wf_out;
+    if (tp->type == TP_PLANNER_SCURVE || w->shape != TP_BLEND_G1 || w->theta < TP_CORNER_TURN_MIN ||
+        w->theta > TP_CORNER_TURN_MAX)
         return 0.0;
-    double acc = fmin(a->lim.acc[TP_PATH_AX], b->lim.acc[TP_PATH_AX]);
-    double v = a->wf_out.v_need;
+    double acc = fmin(a->lim.acc[TP_PATH_AX], b->lim.acc[TP_PATH_AX]), v = w->v_need;
     if (!(acc > 0.0) || !isfinite(v))
         return 0.0;
-    double room = v * v / (2.0 * acc);
+    double v_prev = corner_speed(a->jct_in, &a->wf_in, a->cut_in, acc, v);
+    double v_this = corner_speed(TP_JCT_BLEND, w, fmin(a->cut_out, b->cut_in), acc, v);
+    double v_next = corner_speed(b->jct_out, &b->wf_out, b->cut_out, acc, v);
     double a_line = a->geo.len - a->cut_in - a->cut_out, b_line = b->geo.len - b->cut_in - b->cut_out;
-    return a_line >= room && b_line >= room ? TP_CAPS_RESERVE_CORNER : 0.0;
+    int a_room = a_line >= fmax(TP_CORNER_ROOM_CUTS * a->cut_out,
+                                fabs(v_this * v_this - v_prev * v_prev) / (2.0 * acc));
+    int b_room = b_line >= fmax(TP_CORNER_ROOM_CUTS * b->cut_in,
+                                fabs(v_this * v_this - v_next * v_next) / (2.0 * acc));
+    return a_room && b_room ? TP_CAPS_RESERVE_CORNER : 0.0;
 }
 
 /* Emit the blend stored in a (from a into b): first half owned by a_owner, second by b_owner, each
