@@ -6,26 +6,32 @@
 
 #define T 0.001
 
-/* The machine of motion.md sec. 11: axis velocity 4, acceleration 100, MAX_LINEAR_VELOCITY 5. */
-static tp_planner_t *machine(double jerk)
+/* A planner on a machine with the same limits on every axis (path speed limit vlimit). */
+static tp_planner_t *machine_with(double vel, double vlimit, double acc, double jerk, double max_fo)
 {
     tp_planner_t *tp = tp_planner_create(200);
     tp_limits_t l;
     memset(&l, 0, sizeof(l));
     l.cycle_time = T;
-    l.vlimit = 5.0;
-    l.amax = 100.0;
+    l.vlimit = vlimit;
+    l.amax = acc;
     l.jmax = jerk;
-    l.max_feed_override = 1.2;
+    l.max_feed_override = max_fo;
     for (int i = 0; i < TP_NUM_AXES; i++) {
-        l.axis_vel[i] = 4.0;
-        l.axis_acc[i] = 100.0;
+        l.axis_vel[i] = vel;
+        l.axis_acc[i] = acc;
         l.axis_jerk[i] = jerk;
     }
     tp_planner_set_limits(tp, &l);
     if (jerk > 0.0)
         tp_planner_set_type(tp, TP_PLANNER_SCURVE);
     return tp;
+}
+
+/* The machine of motion.md sec. 11: axis velocity 4, acceleration 100, MAX_LINEAR_VELOCITY 5. */
+static tp_planner_t *machine(double jerk)
+{
+    return machine_with(4.0, 5.0, 100.0, jerk, 1.2);
 }
 
 /* A feed move to (x, y, z) at vel units/s, id = line. */
@@ -178,18 +184,7 @@ static void sharp_corner_no_tolerance(void)
  * at the corners' speed.  Reports the cycles spent on the step and the fastest sample there. */
 static void short_step(void)
 {
-    tp_planner_t *tp = machine(0.0);
-    tp_limits_t l;
-    memset(&l, 0, sizeof(l));
-    l.cycle_time = T;
-    l.vlimit = 50.0;
-    l.amax = 5000.0;
-    l.max_feed_override = 1.0;
-    for (int i = 0; i < TP_NUM_AXES; i++) {
-        l.axis_vel[i] = 50.0;
-        l.axis_acc[i] = 5000.0;
-    }
-    tp_planner_set_limits(tp, &l);
+    tp_planner_t *tp = machine_with(50.0, 50.0, 5000.0, 0.0, 1.0);
     tp_cycle_in_t in = inputs();
     const double step = 0.2;
     tp_segment_t m[3] = {move(20, 0, 0, 50.0, 1), move(20, step, 0, 50.0, 2), move(0, step, 0, 50.0, 3)};
