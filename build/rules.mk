@@ -24,19 +24,20 @@ LDFLAGS_ALL = $(ASAN_FLAGS) -Llib -Wl,-rpath,'$$ORIGIN/../lib' $(EXTRA_LDFLAGS)
 TARGETS :=
 PUBLIC_HEADERS :=
 
-# user-space objects
-objects/%.o: %.c
+# user-space objects (after the public headers are copied to include/: a changed header is
+# never read from a stale copy when make runs jobs in parallel)
+objects/%.o: %.c | headers
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS_ALL) -DULAPI -c $< -o $@
-objects/%.o: %.cc
+objects/%.o: %.cc | headers
 	@mkdir -p $(@D)
 	$(CXX) $(CXXFLAGS_ALL) -DULAPI -c $< -o $@
 
 # realtime objects (same sources may be built both ways)
-objects/rt/%.o: %.c
+objects/rt/%.o: %.c | headers
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS_ALL) -DRTAPI -c $< -o $@
-objects/rt/%.o: %.cc
+objects/rt/%.o: %.cc | headers
 	@mkdir -p $(@D)
 	$(CXX) $(CXXFLAGS_ALL) -DRTAPI -c $< -o $@
 

@@ -43,13 +43,7 @@ std::string folder_of(const std::string &path)
 EstimateJob::EstimateJob(const MachineConfig &cfg, const kins_coords_t &coords, EstimateReport &report)
     : cfg_(cfg), coords_(coords), report_(report), sim_(cfg, coords), xl_(cfg), tools_(cfg.random_toolchanger)
 {
-    CanonConfig cc;
-    cc.linear_units = cfg.linear_units;
-    cc.angular_units = cfg.angular_units;
-    cc.axis_mask = cfg.axis_mask;
-    cc.spindles = cfg.spindles;
-    cc.limits = machine_axis_limits(cfg);
-    canon_ = std::make_unique<TaskCanon>(cc, *this, list_);
+    canon_ = std::make_unique<TaskCanon>(machine_canon_config(cfg), *this, list_);
 }
 
 EstimateJob::~EstimateJob()

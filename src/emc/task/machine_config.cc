@@ -1,5 +1,6 @@
 // machine_config.cc: reading task's INI keys with LinuxCNC's defaults; fatal problems are collected as messages.
 #include "machine_config.hh"
+#include "task_canon.hh"
 
 #include <cctype>
 #include <cstdio>
@@ -267,4 +268,17 @@ canon_axis_limits_t machine_axis_limits(const MachineConfig &c)
         lim.jerk[a] = c.axis[a].max_jerk;
     }
     return lim;
+}
+
+CanonConfig machine_canon_config(const MachineConfig &c)
+{
+    CanonConfig cc;
+    cc.linear_units = c.linear_units;
+    cc.angular_units = c.angular_units;
+    cc.axis_mask = c.axis_mask;
+    cc.spindles = c.spindles;
+    cc.limits = machine_axis_limits(c);
+    cc.tool_change_axes = c.tool_change_axes;
+    for (int i = 0; i < 9; i++) cc.tool_change_position[i] = c.tool_change_position[i];
+    return cc;
 }

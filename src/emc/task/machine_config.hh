@@ -86,5 +86,9 @@ struct MachineConfig {
 bool machine_config_read(const std::string &ini, MachineConfig &cfg, std::vector<std::string> *errors);
 // The per-axis limits canon uses (MAX_VELOCITY/ACCELERATION less the OFFSET_AV_RATIO share).
 canon_axis_limits_t machine_axis_limits(const MachineConfig &cfg);
+// The canon settings of this machine (units, axes, spindles, limits, tool change position): one
+// place for task and the estimator, so both plan the same moves.
+struct CanonConfig;
+CanonConfig machine_canon_config(const MachineConfig &cfg);
 
 #endif

@@ -17,15 +17,7 @@ double task_now()
 Task::Task(const MachineConfig &cfg)
     : cfg_(cfg), xl_(cfg), io_(cfg.tool_table, cfg.random_toolchanger), inihal_(cfg)
 {
-    CanonConfig cc;
-    cc.linear_units = cfg.linear_units;
-    cc.angular_units = cfg.angular_units;
-    cc.axis_mask = cfg.axis_mask;
-    cc.spindles = cfg.spindles;
-    cc.limits = machine_axis_limits(cfg);
-    cc.tool_change_axes = cfg.tool_change_axes;
-    for (int i = 0; i < 9; i++) cc.tool_change_position[i] = cfg.tool_change_position[i];
-    canon_ = std::make_unique<TaskCanon>(cc, *this, list_);
+    canon_ = std::make_unique<TaskCanon>(machine_canon_config(cfg), *this, list_);
     emc_set_text(st_.task.ini_filename, cfg.ini_path.c_str());
 }
 
