@@ -5,7 +5,7 @@ import os
 import sys
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "lib"))
 from taskui import c, s, say, errors, machine_on, home_all, linuxcnc  # noqa: E402
-from changer import io, answer, wait_pin, status, interp_vars  # noqa: E402
+from changer import io, answer, wait_pin, status, interp_vars, change_to_t0  # noqa: E402
 
 
 def tlo_z():
@@ -30,13 +30,7 @@ say("T1 again: prepare asked", wait_pin("prepare", True, 1.0), c.wait_complete()
     "prep", io("tool-prep-number"), io("tool-prep-pocket"))
 c.mdi("M6")
 say("M6 of the loaded tool: change asked", wait_pin("change", True, 1.0), c.wait_complete(), status())
-c.mdi("T0")
-wait_pin("prepare", True)
-say("T0 preparing", status(), "prep", io("tool-prep-number"), io("tool-prep-pocket"))
-answer("prepare", "prepared")
-c.mdi("M6")
-say("T0 M6 answered", answer("change", "changed"), c.wait_complete(), status(),
-    "pins", io("tool-number"), io("tool-from-pocket"), "|", interp_vars())
+change_to_t0()
 c.mdi("G43 H0")
 say("G43 H0", c.wait_complete(), "tlo z", tlo_z())
 c.mdi("G43 H1")

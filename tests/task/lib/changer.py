@@ -67,3 +67,14 @@ def interp_vars():
             return m[1].strip()
         time.sleep(0.01)
     return "no debug message"
+
+
+def change_to_t0():
+    """T0 then M6, both answered by hand; says what the changer and status show at each step."""
+    c.mdi("T0")
+    wait_pin("prepare", True)
+    say("T0 preparing", status(), "prep", io("tool-prep-number"), io("tool-prep-pocket"))
+    answer("prepare", "prepared")
+    c.mdi("M6")
+    say("T0 M6 answered", answer("change", "changed"), c.wait_complete(), status(),
+        "pins", io("tool-number"), io("tool-from-pocket"), "|", interp_vars())
