@@ -30,6 +30,8 @@
 /* Share of the limits a blend's speed is estimated with when weighed against a stop (what the caps
  * leave after their reserve for speed changes). */
 #define TP_STOP_SHARE 0.75
+/* Tangent and curvature components below this: the axis does not move through a corner. */
+#define TP_AXIS_STILL 1e-12
 /* Bisection steps for the common speed of two blends sharing a short move. */
 #define TP_SPLIT_ITER 30
 
@@ -101,7 +103,11 @@ static double blend_want(tp_planner_t *tp, tp_seg_t *a, tp_seg_t *b, const tp_co
             v_need = fmin(v_need, caps[k]);
     double acc = fmin(a->lim.acc[TP_PATH_AX], b->lim.acc[TP_PATH_AX]);
     double jerk = tp->type == TP_PLANNER_SCURVE ? fmin(a->lim.jerk[TP_PATH_AX], b->lim.jerk[TP_PATH_AX]) : 0.0;
+    /* the axes that move through the corner (an axis outside the machine has a token limit) */
+    tp_jet_t ja = tp_geo_jet(&a->geo, a->geo.len), jb = tp_geo_jet(&b->geo, 0.0);
     for (int i = 0; i < TP_NAX; i++) {
+        if (fabs(ja.d1.x[i]) + fabs(jb.d1.x[i]) + fabs(ja.d2.x[i]) + fabs(jb.d2.x[i]) < TP_AXIS_STILL)
+            continue;
         if (a->lim.acc[i] > 0.0)
             acc = fmin(acc, a->lim.acc[i]);
         if (jerk > 0.0 && a->lim.jerk[i] > 0.0)

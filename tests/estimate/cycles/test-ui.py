@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The display of the cycle-count test: run cut.ngc with the motion queue filled before motion
+"""The display of the cycle-count test: run $CYCLES_PROGRAM (default cut.ngc) with the motion queue filled before motion
 starts (feed inhibit held until the interpreter is done), sample every servo cycle, write the
 number of cycles from the first to the last one that moved to real-cycles.txt."""
 import os
@@ -30,6 +30,10 @@ def motion_cycles(path):
     return moved[-1] - moved[0] + 1 if moved else 0
 
 
+program = os.path.abspath(os.environ.get("CYCLES_PROGRAM", "cut.ngc"))
+with open(program) as f:
+    last_move = sum(1 for _ in f) - 1      # the line before the closing M2
+
 machine_on()
 home_all()
 c.mode(linuxcnc.MODE_AUTO)
@@ -38,9 +42,9 @@ halcmd("setp", "motion.feed-inhibit", "1")
 out = open("samples.txt", "w")
 sampler = subprocess.Popen(["halsampler", "-t"], stdout=out)
 time.sleep(0.2)
-c.program_open(os.path.abspath("cut.ngc"))
+c.program_open(program)
 c.auto(linuxcnc.AUTO_RUN, 0)
-wait(lambda st: st.read_line >= 13 or st.interp_state == linuxcnc.INTERP_WAITING, what="program read")
+wait(lambda st: st.read_line >= last_move or st.interp_state == linuxcnc.INTERP_WAITING, what="program read")
 time.sleep(0.3)
 halcmd("setp", "motion.feed-inhibit", "0")
 wait(lambda st: st.interp_state == linuxcnc.INTERP_IDLE and st.inpos, timeout=20, what="program end")
