@@ -15,6 +15,8 @@ namespace {
 constexpr long MAX_LEVELS = 100000;
 // level and point tolerance
 constexpr double EPS = 1e-9;
+// a place this close to an element's end point is that end point
+constexpr double SAME_POINT = 1e-7;
 
 // Maps the ZX plane to the cycle frame: (c, s) = (z, x) or (x, z) when swapped (G72), then
 // u = cdir * c and v = vsign * s.
@@ -206,11 +208,40 @@ void walk(Emitter &em, const std::vector<Elem> &p, const Job &j)
 bool element_start(const std::vector<Elem> &p, Place at)
 {
     bool first = at.k == 0 || p[at.k - 1].id != p[at.k].id;
-    return first && dist(elem_point(p[at.k], at.t), p[at.k].a) < 1e-7;
+    return first && dist(elem_point(p[at.k], at.t), p[at.k].a) < SAME_POINT;
+}
+
+// true when a bridge landing at h lands inside an arc (LinuxCNC then feeds to no element start
+// from the flat run before the pocket up to the landing; on a line it does)
+bool lands_inside_arc(const std::vector<Elem> &p, Place h)
+{
+    bool last = h.k + 1 == p.size() || p[h.k + 1].id != p[h.k].id;
+    bool at_end = last && dist(elem_point(p[h.k], h.t), p[h.k].b) < SAME_POINT;
+    return p[h.k].arc && !element_start(p, h) && !at_end;
+}
+
+// true when the pocket whose top is descending piece k is bridged into the middle of an arc
+bool bridge_lands_inside(const std::vector<Elem> &p, size_t k)
+{
+    Place h;
+    return find_crossing(p, Place{k, 0}, p[k].a.v, true, h) && lands_inside_arc(p, h);
+}
+
+// true when the flat pieces from k on lead at their level into a pocket bridged into the middle
+// of an arc: the bridge then takes them in, without feeds to their starts
+bool flat_into_inside_bridge(const std::vector<Elem> &p, size_t k)
+{
+    double level = p[k].a.v;
+    for (; k < p.size(); k++) {
+        if (std::fabs(p[k].a.v - level) > EPS || std::fabs(p[k].b.v - level) > EPS) break;
+    }
+    return k < p.size() && descends(p[k]) && std::fabs(p[k].a.v - level) <= EPS &&
+           bridge_lands_inside(p, k);
 }
 
 // The final contour of G71.1/G72.1: pockets bridged by a straight cut at their top level. Each
-// path element starts with a feed to its start point; a bridge joins the elements it cuts into.
+// path element starts with a feed to its start point, except where a bridge lands inside an
+// arc: that bridge joins the elements it cuts into and the flat ones leading into it.
 void walk_bridged(Emitter &em, const std::vector<Elem> &p)
 {
     Place at;
@@ -220,13 +251,14 @@ void walk_bridged(Emitter &em, const std::vector<Elem> &p)
         Place h;
         bool top = descends(e) && at.t < EPS;
         if (top && find_crossing(p, at, e.a.v, true, h)) {
-            if (element_start(p, at)) em.feed(e.a);
+            if (element_start(p, at) && !lands_inside_arc(p, h)) em.feed(e.a);
             em.feed(elem_point(p[h.k], h.t));
             fresh = element_start(p, h);
             at = h;
             continue;
         }
-        if (fresh && element_start(p, at)) em.feed(e.a);
+        if (fresh && element_start(p, at) && !(at.t < EPS && flat_into_inside_bridge(p, at.k)))
+            em.feed(e.a);
         follow(em, p, at, Place{at.k, 1});
         at = {at.k + 1, 0};
         fresh = true;
