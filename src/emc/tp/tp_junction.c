@@ -58,14 +58,17 @@ static tp_jct_t classify(tp_planner_t *tp, tp_seg_t *a, tp_seg_t *b, tp_corner_t
 }
 
 /* Tolerance left to a blend between units a and b after their lines' own deviation.  Without
- * G64 P the geometry bounds it, as in LinuxCNC: a share of the shorter adjacent move. */
-static double blend_tol(tp_planner_t *tp, const tp_seg_t *a, const tp_seg_t *b)
+ * G64 P the geometry bounds it, as in LinuxCNC: a share of the shorter adjacent move; for a blend
+ * that carries a sampled curve's curvature (tiling), of the shorter adjacent unit, whose merged
+ * line it follows (the chords' share would straighten it at every unit). */
+static double blend_tol(tp_planner_t *tp, const tp_seg_t *a, const tp_seg_t *b, int curved)
 {
     double dev = fmax(a->unit_dev, b->unit_dev);
     if (a->tol > 0.0)
         return a->tol - dev;
     const tp_seg_t *last = tp_unit_last(tp, a);
-    double free = TP_FREE_DEV_SHARE * fmin(last->own1 - last->own0, b->own1 - b->own0);
+    double free = curved ? fmin(a->geo.len, b->geo.len) : fmin(last->own1 - last->own0, b->own1 - b->own0);
+    free *= TP_FREE_DEV_SHARE;
     return fmax(free - dev, 0.5 * free);
 }
 
@@ -113,7 +116,7 @@ static double blend_want(tp_planner_t *tp, tp_seg_t *a, tp_seg_t *b, const tp_co
         if (jerk > 0.0 && a->lim.jerk[i] > 0.0)
             jerk = fmin(jerk, a->lim.jerk[i]);
     }
-    double tol = blend_tol(tp, a, b);
+    double tol = blend_tol(tp, a, b, 0);
     w->theta = c->theta;
     w->kink = c->kink;
     w->shape = c->shape;
@@ -256,7 +259,7 @@ static int build_blend(tp_planner_t *tp, tp_seg_t *a, tp_seg_t *b, int a_free, d
 {
     tp_corner_t c;
     tp_blend_spec_t spec;
-    double tol = blend_tol(tp, a, b);
+    double tol_plain = blend_tol(tp, a, b, 0), tol_curved = blend_tol(tp, a, b, 1);
     tp_corner_describe(&c, &a->geo, &b->geo);
     c.shape = a->wf_out.shape;
     memset(&spec, 0, sizeof(spec));
@@ -275,6 +278,7 @@ static int build_blend(tp_planner_t *tp, tp_seg_t *a, tp_seg_t *b, int a_free, d
     for (int k = 0; k < TP_BLEND_TRIES; k++) {
         if (tp_blend_build(&a->blend, &c, &spec) < 0)
             return -1;
+        double tol = spec.ka_set || spec.kb_set ? tol_curved : tol_plain;
         double worst = tp_blend_worst(&a->blend, &c, &spec, tol);
         if (worst <= tol)
             break;

@@ -179,6 +179,41 @@ static void sharp_corner_no_tolerance(void)
     tp_planner_destroy(tp);
 }
 
+/* A sampled curve without G64 P (0.05 mm chords of an R5 half circle at F120, S-curve on the
+ * bench machine): the blends along the merged chords carry the curvature, so the middle third runs
+ * at the feed (the circle allows min(F, sqrt(A R), cbrt(J R^2)) = 120) instead of pulsing. */
+static void sampled_curve_no_tolerance(void)
+{
+    tp_planner_t *tp = machine_with(500.0, 500.0, 5000.0, 200000.0, 1.0);
+    tp_cycle_in_t in = inputs();
+    tp_planner_set_term_cond(tp, TP_TERM_COND_BLEND, 0.0);
+    const double r = 5.0, step = 0.01;
+    int n = (int)(M_PI / step), added = 0;
+    tp_cycle_out_t prev, out;
+    memset(&prev, 0, sizeof(prev));
+    tp_planner_get_pos(tp, &prev.pos);
+    double v_min = 1e9;
+    for (int k = 0; k < 20000; k++) {
+        while (added < n && !tp_planner_queue_full(tp)) {   /* as task keeps the queue filled */
+            added++;
+            tp_segment_t s = move(r * sin(added * step), r - r * cos(added * step), 0, 120.0, added);
+            s.ini_maxvel = 500.0;
+            s.acc = 5000.0;
+            tp_planner_add(tp, &s);
+        }
+        tp_planner_run_cycle(tp, &in, &out);
+        double angle = atan2(out.pos.tran.x, r - out.pos.tran.y);
+        if (angle > M_PI / 3.0 && angle < 2.0 * M_PI / 3.0)
+            v_min = fmin(v_min, speed(&prev, &out));
+        prev = out;
+        if (out.done && added == n)
+            break;
+    }
+    printf("S-curve sampled R5 circle without P at F120: middle third at least 90 %% of the feed: %s\n",
+           v_min >= 0.9 * 120.0 ? "yes" : "no");
+    tp_planner_destroy(tp);
+}
+
 /* A short move between two corners the tolerance slows down (a raster's step to the next row, on
  * a machine of 50 mm/s and 5000 mm/s^2): between the blends the speed rises again, it is not held
  * at the corners' speed.  Reports the cycles spent on the step and the fastest sample there. */
@@ -629,6 +664,7 @@ int main(void)
     lone_move();
     corner_modes();
     sharp_corner_no_tolerance();
+    sampled_curve_no_tolerance();
     short_step();
     overrides();
     hold_and_pause();
