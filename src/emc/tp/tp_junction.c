@@ -17,13 +17,15 @@
 /* Turns above this (rad) are corners: blends on both sides of a move meet without curvature (below
  * it a sampled curve, however coarse: the deviation check still bounds the curvature carried). */
 #define TP_TILE_CURVE_TURN 0.7
-/* Blends are sized for the wanted speed with this margin, using these shares of the limits. */
+/* Blends are sized for the wanted speed with this margin (trapezoid, S-curve), using these shares
+ * of the limits (the values the bench programs run fastest with). */
 #define TP_WANT_MARGIN 2.5
+#define TP_WANT_MARGIN_JERK 5.0
 #define TP_WANT_ACC_SHARE 0.2
-#define TP_WANT_JERK_SHARE 0.2
+#define TP_WANT_JERK_SHARE 0.1
 /* Longest cut on one side of a blend, in cuts of the other side: S-curve, trapezoid (whose
  * lopsided blends cost more than the length they gain). */
-#define TP_BLEND_SKEW 1.4
+#define TP_BLEND_SKEW 1.2
 #define TP_BLEND_SKEW_TRAP 1.0
 /* Without G64 P a blend misses its corner by at most this share of the shorter adjacent move. */
 #define TP_FREE_DEV_SHARE 0.25
@@ -76,7 +78,8 @@ static double blend_tol(tp_planner_t *tp, const tp_seg_t *a, const tp_seg_t *b, 
 static double want_at(const tp_want_t *w, double v)
 {
     tp_corner_t c = {NULL, NULL, w->theta, w->kink, w->shape};
-    return fmin(w->cap, TP_WANT_MARGIN * tp_blend_need_cut(&c, v, w->acc, w->jerk));
+    double margin = w->jerk > 0.0 ? TP_WANT_MARGIN_JERK : TP_WANT_MARGIN;
+    return fmin(w->cap, margin * tp_blend_need_cut(&c, v, w->acc, w->jerk));
 }
 
 /* Shape of a blend: G2 where jerk is limited or where the tolerance lets a G2 blend pass at the

@@ -5,7 +5,7 @@
 /* Moves a unit may hold (bounds the work of each add). */
 #define TP_UNIT_MAX 64
 /* Share of the tolerance the merged line may stray from the moves' end points. */
-#define TP_UNIT_TOL_SHARE 0.25
+#define TP_UNIT_TOL_SHARE 0.15
 /* Without G64 P: share of the shorter neighbouring move a vertex may stray from the merged line
  * (less than the blends' quarter: shorter units leave the blends room to share whole units, so a
  * sampled curve runs curvature-continuous). */
