@@ -7,9 +7,9 @@
 #define TP_CAP_STEPS 64.0
 /* A region aims at 1/TP_REGION_SHARE of the braking distance at its speed. */
 #define TP_REGION_SHARE 24.0
-/* Trapezoid mode: short pieces whose speed caps differ by more than this factor stay apart when
- * the faster one takes more than a cycle at the slower cap, so a short straight between two slow
- * blends can speed up in between (S-curve speed changes need more room than such pieces give). */
+/* Short pieces whose speed caps differ by more than this factor stay apart when the faster one
+ * takes more than a cycle at the slower cap, so a short straight between two slow blends can speed
+ * up in between (both planners; S-curve contour 0.80 -> 0.77, the other programs unchanged). */
 #define TP_REGION_APART 2.0
 /* Trapezoid corners whose parabolic blend may keep only a token share for speed changes: turns
  * from 40 degrees (below: sampled curves, whose blends change speed inside) to 160 degrees (above:
@@ -85,7 +85,7 @@ static void region_add(tp_planner_t *tp, const tp_region_t *piece)
         int short_p = piece->len < region_reach(tp, piece);
         const tp_region_t *fast = piece->v_mach > r->v_mach ? piece : r;
         double slow = fmin(piece->v_mach, r->v_mach);
-        int apart = tp->type != TP_PLANNER_SCURVE && fast->v_mach > TP_REGION_APART * slow &&
+        int apart = fast->v_mach > TP_REGION_APART * slow &&
                     fast->len > slow * tp->lim.cycle_time;
         if (compatible && (same || (short_r && short_p && !apart && (faster || region_far(tp, r))))) {
             r->v_mach = fmin(r->v_mach, piece->v_mach);
