@@ -230,11 +230,30 @@ double tp_blend_speed_at_cut(const tp_corner_t *c, double d, double acc, double 
     return v;
 }
 
+/* A tiling point at s along line g carrying curvature k: moved from the line onto the arc of
+ * that curvature through the line's end points (the sampled curve the line stands for), with the
+ * arc's tangent there, so that blends meeting at the middles of units of different lengths follow
+ * the curve instead of the chords' sagittas. */
+static void onto_arc(tp_jet_t *j, const tp_geo_t *g, double s, const tp_vec_t *k)
+{
+    if (g->kind != TP_GEO_LINE)
+        return;
+    j->p = tp_vec_axpy(&j->p, -0.5 * s * (g->len - s), k);
+    tp_vec_t t = tp_vec_axpy(&j->d1, s - 0.5 * g->len, k);
+    double n = sqrt(tp_vec_dot(&t, &t));
+    if (n > 0.0)
+        j->d1 = tp_vec_scale(&t, 1.0 / n);
+}
+
 /* Build the blend from ga at (len - da) to gb at db. */
 int tp_blend_build(tp_geo_t *out, const tp_corner_t *c, const tp_blend_spec_t *spec)
 {
     tp_jet_t a = tp_geo_jet(c->ga, c->ga->len - spec->da);
     tp_jet_t b = tp_geo_jet(c->gb, spec->db);
+    if (spec->ka_set)
+        onto_arc(&a, c->ga, c->ga->len - spec->da, &spec->ka);
+    if (spec->kb_set)
+        onto_arc(&b, c->gb, spec->db, &spec->kb);
     memset(out, 0, sizeof(*out));
     out->kind = TP_GEO_QUINTIC;
     out->metric = c->ga->metric;

@@ -317,6 +317,30 @@ int tp_jct_can_stop_before(const tp_planner_t *tp, double s_at)
     return tp->ex.s + reach + tp->ex.v * tp->lim.cycle_time <= s_at;
 }
 
+/* The rest of unit a after a blend that failed at its far end: from its cut point to its end,
+ * where the executor stops.  When the blend into a carried curvature, its cut point lies on the
+ * arc off the line (tp_blend.c): a blend from there back onto the line's end replaces the line. */
+static void emit_rest(tp_planner_t *tp, tp_seg_t *a)
+{
+    if (a->k_out_set && a->geo.kind == TP_GEO_LINE && a->cut_out > 0.0) {
+        tp_corner_t c;
+        tp_blend_spec_t spec;
+        memset(&spec, 0, sizeof(spec));
+        c.ga = c.gb = &a->geo;
+        c.theta = c.kink = 0.0;
+        c.shape = TP_BLEND_G2;
+        spec.da = a->cut_out;
+        spec.db = a->geo.len;
+        spec.ka_set = 1;
+        spec.ka = a->k_out;
+        if (tp_blend_build(&a->blend, &c, &spec) == 0) {
+            tp_emit_blend(tp, a, tp_unit_last(tp, a), a, tp_unit_last(tp, a));
+            return;
+        }
+    }
+    tp_unit_emit(tp, a, a->geo.len - a->cut_out, a->geo.len, 0);
+}
+
 /* Emit the blend a -> b, or the rest of a and a stop at the corner when no blend fits. */
 static void emit_in_blend(tp_planner_t *tp, tp_seg_t *a, tp_seg_t *b)
 {
@@ -325,7 +349,7 @@ static void emit_in_blend(tp_planner_t *tp, tp_seg_t *a, tp_seg_t *b)
     if (build_blend(tp, a, b, a_free, &shrunk) < 0) {
         /* the rest of a; a curvature carried into its cut point must come to rest there */
         tp->stop_next = tp->stop_next || a->k_out_set;
-        tp_unit_emit(tp, a, a->geo.len - a->cut_out, a->geo.len, 0);
+        emit_rest(tp, a);
         a->jct_out = b->jct_in = TP_JCT_STOP;
         a->cut_out = b->cut_in = 0.0;
         b->tiled = 0;
@@ -387,7 +411,7 @@ static void provisional_emit(tp_planner_t *tp, tp_seg_t *b, tp_seg_t *c)
             tp_emit_blend(tp, b, tp_unit_last(tp, b), c, c);
         } else {
             tp->stop_next = tp->stop_next || b->k_out_set;
-            tp_unit_emit(tp, b, b->geo.len - b->cut_out, b->geo.len, 0);
+            emit_rest(tp, b);
             c->cut_in = 0.0;
             tp->stop_next = 1;
         }

@@ -179,15 +179,16 @@ static void sharp_corner_no_tolerance(void)
     tp_planner_destroy(tp);
 }
 
-/* A sampled curve without G64 P (0.05 mm chords of an R5 half circle at F120, S-curve on the
- * bench machine): the blends along the merged chords carry the curvature, so the middle third runs
- * at the feed (the circle allows min(F, sqrt(A R), cbrt(J R^2)) = 120) instead of pulsing. */
-static void sampled_curve_no_tolerance(void)
+/* A sampled curve without G64 P (chords of about r * step along a half circle at feed f, uneven
+ * with jitter, S-curve on the bench machine): the blends along the merged chords carry the
+ * curvature and follow the arc through the units' end points (not their sagittas, which differ with
+ * the units' lengths), so the middle third runs near the feed (an R5 circle allows
+ * min(F, sqrt(A r), cbrt(J r^2)) = 158 / 171) instead of pulsing. */
+static void sampled_curve_no_tolerance(double r, double step, double f, double jitter, double share)
 {
     tp_planner_t *tp = machine_with(500.0, 500.0, 5000.0, 200000.0, 1.0);
     tp_cycle_in_t in = inputs();
     tp_planner_set_term_cond(tp, TP_TERM_COND_BLEND, 0.0);
-    const double r = 5.0, step = 0.01;
     int n = (int)(M_PI / step), added = 0;
     tp_cycle_out_t prev, out;
     memset(&prev, 0, sizeof(prev));
@@ -196,7 +197,8 @@ static void sampled_curve_no_tolerance(void)
     for (int k = 0; k < 20000; k++) {
         while (added < n && !tp_planner_queue_full(tp)) {   /* as task keeps the queue filled */
             added++;
-            tp_segment_t s = move(r * sin(added * step), r - r * cos(added * step), 0, 120.0, added);
+            double ang = added == n ? M_PI : (added + jitter * sin(1.7 * added)) * step;
+            tp_segment_t s = move(r * sin(ang), r - r * cos(ang), 0, f, added);
             s.ini_maxvel = 500.0;
             s.acc = 5000.0;
             tp_planner_add(tp, &s);
@@ -209,8 +211,8 @@ static void sampled_curve_no_tolerance(void)
         if (out.done && added == n)
             break;
     }
-    printf("S-curve sampled R5 circle without P at F120: middle third at least 90 %% of the feed: %s\n",
-           v_min >= 0.9 * 120.0 ? "yes" : "no");
+    printf("S-curve sampled R%g circle (chords %s) without P at F%g: middle third at least %.0f %% of the "
+           "feed: %s\n", r, jitter > 0.0 ? "uneven" : "even", f, 100.0 * share, v_min >= share * f ? "yes" : "no");
     tp_planner_destroy(tp);
 }
 
@@ -664,7 +666,8 @@ int main(void)
     lone_move();
     corner_modes();
     sharp_corner_no_tolerance();
-    sampled_curve_no_tolerance();
+    sampled_curve_no_tolerance(5.0, 0.01, 120.0, 0.0, 0.9);
+    sampled_curve_no_tolerance(5.0, 0.01, 120.0, 0.4, 0.8);
     short_step();
     overrides();
     hold_and_pause();
