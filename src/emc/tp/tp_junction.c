@@ -228,8 +228,8 @@ static tp_vec_t vertex_curvature(const tp_seg_t *a, const tp_seg_t *b)
     return tp_vec_scale(&k, 2.0 / (a->geo.len + b->geo.len));
 }
 
-/* Curvature where the blends on a tiled line b meet: the gentler of the curvatures at its two
- * vertices when both turn the same way (minmod), none at an inflection; normal to b. */
+/* Curvature where the blends on a tiled line b meet, from the curvatures at its two vertices when
+ * both turn the same way (none at an inflection); normal to b. */
 static void tile_curvature(tp_seg_t *a, tp_seg_t *b, tp_seg_t *c)
 {
     b->k_in_set = b->k_out_set = 0;
@@ -252,7 +252,10 @@ static void tile_curvature(tp_seg_t *a, tp_seg_t *b, tp_seg_t *c)
         return;
     tp_vec_t sum = tp_vec_axpy(&k1, 1.0, &k2);
     double ns = sqrt(tp_vec_dot(&sum, &sum));
-    b->k_in = tp_vec_scale(&sum, cs * fmin(n1, n2) / ns);
+    /* the gentler of the two (minmod) keeps a blend inside a G64 P tolerance; without P their
+     * harmonic mean, which a curve tightening along the run follows more closely */
+    double k = b->tol > 0.0 ? fmin(n1, n2) : 2.0 * n1 * n2 / (n1 + n2);
+    b->k_in = tp_vec_scale(&sum, cs * k / ns);
     b->k_out = b->k_in;
     b->k_in_set = b->k_out_set = 1;
 }
