@@ -31,6 +31,18 @@ static int64_t queue_place(const nml_shm_t *shm, uint32_t need, int *wrap)
     return need <= shm->head - shm->tail ? (int64_t)shm->tail : -1;
 }
 
+/* Move head past the end of the ring (a gap too small for a record, or a wrap marker) to the
+ * start, where the oldest record then is.  A head left at the end looked to queue_place like free
+ * room up to the end while the ring was full: a second writer process overwrote unread records. */
+static void queue_normalize_head(nml_shm_t *shm)
+{
+    if (shm->count == 0 || shm->head > shm->data_size)
+        return;
+    if (shm->data_size - shm->head < sizeof(nml_record_t) ||
+        ((nml_record_t *)(shm->data + shm->head))->size == NML_RECORD_WRAP)
+        shm->head = 0;
+}
+
 /* Append a message; -EAGAIN when it does not fit now (nothing changes then). */
 int nml_queue_write(struct nml_channel *ch, const void *msg, uint32_t size, int32_t *serial)
 {
@@ -46,6 +58,7 @@ int nml_queue_write(struct nml_channel *ch, const void *msg, uint32_t size, int3
     nml_lock(shm);
     if (shm->count == 0)
         shm->head = shm->tail = 0;
+    queue_normalize_head(shm);
     at = queue_place(shm, need, &wrap);
     if (at < 0) {
         nml_unlock(shm);
@@ -129,6 +142,7 @@ int nml_queue_read(struct nml_channel *ch, void *buf, size_t cap, int remove)
         shm->head += record_bytes(rec->size);
         if (--shm->count == 0)
             shm->head = shm->tail = 0;
+        queue_normalize_head(shm);
         nml_notify(shm);
     }
     nml_unlock(shm);

@@ -47,6 +47,7 @@ void case_roundtrip_fork();
 void case_corrupt();
 void case_queue_full();
 void case_queue_wrap();
+void case_queue_end();
 void case_confirm_write();
 void case_serial_shared();
 void case_serial_fork();

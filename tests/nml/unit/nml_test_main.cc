@@ -90,7 +90,7 @@ struct Case {
 const Case cases[] = {
     {"roundtrip", case_roundtrip},       {"roundtrip-fork", case_roundtrip_fork},
     {"corrupt", case_corrupt},           {"queue-full", case_queue_full},
-    {"queue-wrap", case_queue_wrap},     {"confirm-write", case_confirm_write},
+    {"queue-wrap", case_queue_wrap},     {"queue-end", case_queue_end},     {"confirm-write", case_confirm_write},
     {"serial-shared", case_serial_shared}, {"serial-fork", case_serial_fork},
     {"torn", case_torn},                 {"wait", case_wait},
     {"shutdown", case_shutdown},         {"codec", case_codec},
