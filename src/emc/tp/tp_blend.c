@@ -1,4 +1,4 @@
-/* tp_blend.c: corner blends (quintic G2, parabolic G1): construction, sizing tables and deviation checks. */
+/* tp_blend.c: corner blends (degree-7 G2, parabolic G1): construction, sizing tables and deviation checks. */
 #include <math.h>
 #include <string.h>
 #include "tp_blend.h"
@@ -6,6 +6,7 @@
 #define TP_BLEND_TABLE 181          /* one entry per degree, 0..180 */
 #define TP_BLEND_LAM_ITER 6
 #define TP_BLEND_SAMPLES 9          /* points of each side of the original path in deviation checks */
+#define TP_BLEND_RAMP 0.75          /* share of the triangle's curvature slope at the blend ends */
 
 /* Per shape and unit cut of a line-line corner: vertex miss, largest |p''| and |p'''| along the
  * blend. */
@@ -13,17 +14,48 @@ static double tab_miss[2][TP_BLEND_TABLE], tab_d2[2][TP_BLEND_TABLE], tab_d3[2][
 static double tab_len[2][TP_BLEND_TABLE];
 static int tab_ready;
 
-/* Quintic with scale lam matching its own length (so length is the parameter). */
-static int build_quintic(tp_quintic_t *q, const tp_jet_t *a, const tp_jet_t *b, tp_metric_t m,
-                         double lam_max, double *lam_out)
+/* Unit part of u perpendicular to t (zero when u is parallel to t). */
+static tp_vec_t perp_unit(const tp_vec_t *u, const tp_vec_t *t)
+{
+    double tt = tp_vec_dot(t, t);
+    tp_vec_t w = tp_vec_axpy(u, tt > 0.0 ? -tp_vec_dot(u, t) / tt : 0.0, t);
+    double n = sqrt(tp_vec_dot(&w, &w));
+    tp_vec_t zero = {{0}};
+    return n > 1e-12 ? tp_vec_scale(&w, 1.0 / n) : zero;
+}
+
+/* Third derivatives at the blend's ends: the curvature runs towards a peak in the middle, a
+ * triangle of the turn's area from the end curvatures (the shape that turns with the least
+ * curvature change, as a clothoid pair), with TP_BLEND_RAMP of that slope (the polynomial
+ * cannot follow the triangle's apex; a full slope overshoots it). */
+static void end_thirds(const tp_jet_t *a, const tp_jet_t *b, double lam, tp_vec_t *a3, tp_vec_t *b3)
+{
+    const double c = TP_BLEND_RAMP;
+    double na = sqrt(tp_vec_dot(&a->d1, &a->d1)), nb = sqrt(tp_vec_dot(&b->d1, &b->d1));
+    double cs = na > 0.0 && nb > 0.0 ? tp_vec_dot(&a->d1, &b->d1) / (na * nb) : 1.0;
+    double th = acos(fmax(-1.0, fmin(1.0, cs))), d = 0.5 * lam;
+    tp_vec_t wa = perp_unit(&b->d1, &a->d1), wb = perp_unit(&a->d1, &b->d1);
+    double ka = tp_vec_dot(&a->d2, &wa), kb = -tp_vec_dot(&b->d2, &wb);
+    double kp = th / d - 0.5 * (ka + kb);
+    *a3 = tp_vec_scale(&wa, c * (kp - ka) / d);
+    *a3 = tp_vec_axpy(a3, -tp_vec_dot(&a->d2, &a->d2), &a->d1);
+    *b3 = tp_vec_scale(&wb, c * (kp - kb) / d);
+    *b3 = tp_vec_axpy(b3, -tp_vec_dot(&b->d2, &b->d2), &b->d1);
+}
+
+/* Degree-7 blend with scale lam matching its own length (so length is the parameter). */
+static int build_septic(tp_septic_t *q, const tp_jet_t *a, const tp_jet_t *b, tp_metric_t m,
+                        double lam_max, double *lam_out)
 {
     tp_vec_t chord = tp_vec_sub(&b->p, &a->p);
     double lam = tp_vec_metric_norm(&chord, m);
     if (!(lam > 1e-12))
         return -1;
     for (int k = 0; k < TP_BLEND_LAM_ITER; k++) {
-        tp_quintic_hermite(q, a, b, lam);
-        double len = tp_quintic_length(q, m);
+        tp_vec_t a3, b3;
+        end_thirds(a, b, lam, &a3, &b3);
+        tp_septic_hermite(q, a, b, lam, &a3, &b3);
+        double len = tp_septic_length(q, m);
         if (!(len > 0.0) || !isfinite(len) || len > lam_max)
             return -1;
         double step = len - lam;
@@ -31,7 +63,9 @@ static int build_quintic(tp_quintic_t *q, const tp_jet_t *a, const tp_jet_t *b, 
         if (fabs(step) <= 1e-6 * len)
             break;
     }
-    tp_quintic_hermite(q, a, b, lam);
+    tp_vec_t a3, b3;
+    end_thirds(a, b, lam, &a3, &b3);
+    tp_septic_hermite(q, a, b, lam, &a3, &b3);
     *lam_out = lam;
     return 0;
 }
@@ -39,27 +73,34 @@ static int build_quintic(tp_quintic_t *q, const tp_jet_t *a, const tp_jet_t *b, 
 /* End data of a G1 blend: the parabola from a.p to b.p whose tangents meet at the corner (for
  * lines: the quadratic Bezier a.p, corner, b.p), reparameterised by u + c u (1 - u) so that its
  * parameter speed is the same at both ends; that speed (the harmonic mean of 2 da and 2 db) is
- * returned.  Run at constant parameter speed it is the constant-acceleration change from one
- * velocity to the other: the smallest acceleration on every axis a corner of these cuts allows. */
-static double g1_ends(tp_jet_t *a, tp_jet_t *b, double da, double db)
+ * returned, with the end derivatives of the reparameterised curve (second in a, b; third in a3,
+ * b3).  Run at constant parameter speed it is the constant-acceleration change from one velocity
+ * to the other: the smallest acceleration on every axis a corner of these cuts allows. */
+static double g1_ends(tp_jet_t *a, tp_jet_t *b, tp_vec_t *a3, tp_vec_t *b3, double da, double db)
 {
     double c = (db - da) / (da + db), lam = 4.0 * da * db / (da + db), l2 = lam * lam;
+    double l3 = l2 * lam;
     for (int i = 0; i < TP_NAX; i++) {
         double corner = 0.5 * (a->p.x[i] + da * a->d1.x[i] + b->p.x[i] - db * b->d1.x[i]);
         double q2 = 2.0 * (a->p.x[i] - 2.0 * corner + b->p.x[i]);
         a->d2.x[i] = (q2 * (1.0 + c) * (1.0 + c) - 4.0 * c * da * a->d1.x[i]) / l2;
         b->d2.x[i] = (q2 * (1.0 - c) * (1.0 - c) - 4.0 * c * db * b->d1.x[i]) / l2;
+        a3->x[i] = -6.0 * c * (1.0 + c) * q2 / l3;
+        b3->x[i] = -6.0 * c * (1.0 - c) * q2 / l3;
     }
     return lam;
 }
 
-/* Quintic through the end data at parameter scale lam (G1 blends: no length fixed point). */
-static int fixed_quintic(tp_quintic_t *q, const tp_jet_t *a, const tp_jet_t *b, double lam,
-                         double *lam_out)
+/* The G1 blend: its end data, then the polynomial through them at their parameter scale (it
+ * reproduces the reparameterised parabola exactly: no length fixed point). */
+static int g1_blend(tp_septic_t *q, tp_jet_t *a, tp_jet_t *b, double da, double db,
+                    double *lam_out)
 {
+    tp_vec_t a3, b3;
+    double lam = g1_ends(a, b, &a3, &b3, da, db);
     if (!(lam > 1e-12) || !isfinite(lam))
         return -1;
-    tp_quintic_hermite(q, a, b, lam);
+    tp_septic_hermite(q, a, b, lam, &a3, &b3);
     *lam_out = lam;
     return 0;
 }
@@ -76,13 +117,13 @@ static void unit_peaks(const tp_geo_t *g, double *d2, double *d3)
     }
 }
 
-/* Closest distance from point c to a quintic: 17 samples, then golden sections around the best. */
-static double quintic_miss(const tp_quintic_t *q, const tp_vec_t *c)
+/* Closest distance from point c to a blend polynomial: 17 samples, then golden sections around the best. */
+static double septic_miss(const tp_septic_t *q, const tp_vec_t *c)
 {
     int best = 0;
     double dbest = INFINITY;
     for (int k = 0; k <= 16; k++) {
-        tp_vec_t p = tp_quintic_point(q, k / 16.0), d = tp_vec_sub(&p, c);
+        tp_vec_t p = tp_septic_point(q, k / 16.0), d = tp_vec_sub(&p, c);
         double dist = tp_vec_dot(&d, &d);
         if (dist < dbest) {
             dbest = dist;
@@ -92,7 +133,7 @@ static double quintic_miss(const tp_quintic_t *q, const tp_vec_t *c)
     double lo = fmax(0.0, (best - 1) / 16.0), hi = fmin(1.0, (best + 1) / 16.0);
     const double gr = 0.6180339887498949;
     double m1 = hi - gr * (hi - lo), m2 = lo + gr * (hi - lo);
-    tp_vec_t p1 = tp_quintic_point(q, m1), p2 = tp_quintic_point(q, m2);
+    tp_vec_t p1 = tp_septic_point(q, m1), p2 = tp_septic_point(q, m2);
     tp_vec_t e1 = tp_vec_sub(&p1, c), e2 = tp_vec_sub(&p2, c);
     double f1 = tp_vec_dot(&e1, &e1), f2 = tp_vec_dot(&e2, &e2);
     for (int it = 0; it < 14; it++) {
@@ -101,14 +142,14 @@ static double quintic_miss(const tp_quintic_t *q, const tp_vec_t *c)
             m2 = m1;
             f2 = f1;
             m1 = hi - gr * (hi - lo);
-            tp_vec_t p = tp_quintic_point(q, m1), e = tp_vec_sub(&p, c);
+            tp_vec_t p = tp_septic_point(q, m1), e = tp_vec_sub(&p, c);
             f1 = tp_vec_dot(&e, &e);
         } else {
             lo = m1;
             m1 = m2;
             f1 = f2;
             m2 = lo + gr * (hi - lo);
-            tp_vec_t p = tp_quintic_point(q, m2), e = tp_vec_sub(&p, c);
+            tp_vec_t p = tp_septic_point(q, m2), e = tp_vec_sub(&p, c);
             f2 = tp_vec_dot(&e, &e);
         }
     }
@@ -134,11 +175,11 @@ void tp_blend_init(void)
             b.d1.x[1] = sin(th);
             tp_geo_t g;
             memset(&g, 0, sizeof(g));
-            g.kind = TP_GEO_QUINTIC;
+            g.kind = TP_GEO_SEPTIC;
             g.metric = TP_METRIC_XYZ;
             int bad = shape == TP_BLEND_G1
-                          ? fixed_quintic(&g.u.q, &a, &b, g1_ends(&a, &b, 1.0, 1.0), &g.len)
-                          : build_quintic(&g.u.q, &a, &b, TP_METRIC_XYZ, 8.0, &g.len);
+                          ? g1_blend(&g.u.q, &a, &b, 1.0, 1.0, &g.len)
+                          : build_septic(&g.u.q, &a, &b, TP_METRIC_XYZ, 8.0, &g.len);
             if (bad < 0) {
                 tab_miss[shape][k] = 1.0;
                 tab_d2[shape][k] = tab_d3[shape][k] = 1e6;
@@ -146,7 +187,7 @@ void tp_blend_init(void)
                 continue;
             }
             tp_vec_t origin = {{0}};
-            tab_miss[shape][k] = quintic_miss(&g.u.q, &origin);
+            tab_miss[shape][k] = septic_miss(&g.u.q, &origin);
             tab_len[shape][k] = g.len;
             unit_peaks(&g, &tab_d2[shape][k], &tab_d3[shape][k]);
         }
@@ -255,16 +296,16 @@ int tp_blend_build(tp_geo_t *out, const tp_corner_t *c, const tp_blend_spec_t *s
     if (spec->kb_set)
         onto_arc(&b, c->gb, spec->db, &spec->kb);
     memset(out, 0, sizeof(*out));
-    out->kind = TP_GEO_QUINTIC;
+    out->kind = TP_GEO_SEPTIC;
     out->metric = c->ga->metric;
     if (c->shape == TP_BLEND_G1)
-        return fixed_quintic(&out->u.q, &a, &b, g1_ends(&a, &b, spec->da, spec->db), &out->len);
+        return g1_blend(&out->u.q, &a, &b, spec->da, spec->db, &out->len);
     if (spec->ka_set)
         a.d2 = spec->ka;
     if (spec->kb_set)
         b.d2 = spec->kb;
     double lam_max = 2.0 * (spec->da + spec->db);
-    return build_quintic(&out->u.q, &a, &b, out->metric, lam_max, &out->len);
+    return build_septic(&out->u.q, &a, &b, out->metric, lam_max, &out->len);
 }
 
 /* Distance from p to the segment [a, b] in nine axes. */
@@ -310,7 +351,7 @@ void tp_blend_deviation(const tp_geo_t *blend, const tp_corner_t *c, const tp_bl
     tp_vec_t pts[2 * TP_BLEND_SAMPLES - 1];
     int npts;
     double sag = 0.0, dev = 0.0;
-    *vertex_miss = quintic_miss(&blend->u.q, &corner);
+    *vertex_miss = septic_miss(&blend->u.q, &corner);
     if (c->ga->kind == TP_GEO_LINE && c->gb->kind == TP_GEO_LINE) {
         pts[0] = tp_geo_eval(c->ga, c->ga->len - spec->da);
         pts[1] = corner;
@@ -321,7 +362,7 @@ void tp_blend_deviation(const tp_geo_t *blend, const tp_corner_t *c, const tp_bl
         npts = 2 * TP_BLEND_SAMPLES - 1;
     }
     for (int k = 1; k < 8; k++) {
-        tp_vec_t p = tp_quintic_point(&blend->u.q, k / 8.0);
+        tp_vec_t p = tp_septic_point(&blend->u.q, k / 8.0);
         double best = INFINITY;
         for (int m = 0; m + 1 < npts; m++)
             best = fmin(best, seg_dist(&p, &pts[m], &pts[m + 1]));
@@ -336,8 +377,8 @@ static double quick_deviation(const tp_geo_t *blend, const tp_corner_t *c, const
                               const tp_vec_t *corner)
 {
     tp_vec_t qa = tp_geo_eval(c->ga, c->ga->len - spec->da), qb = tp_geo_eval(c->gb, spec->db);
-    tp_vec_t m = tp_quintic_point(&blend->u.q, 0.5), d = tp_vec_sub(&m, corner);
-    tp_vec_t p1 = tp_quintic_point(&blend->u.q, 0.25), p2 = tp_quintic_point(&blend->u.q, 0.75);
+    tp_vec_t m = tp_septic_point(&blend->u.q, 0.5), d = tp_vec_sub(&m, corner);
+    tp_vec_t p1 = tp_septic_point(&blend->u.q, 0.25), p2 = tp_septic_point(&blend->u.q, 0.75);
     double w = sqrt(tp_vec_dot(&d, &d));
     w = fmax(w, fmin(seg_dist(&p1, &qa, corner), seg_dist(&p1, corner, &qb)));
     return fmax(w, fmin(seg_dist(&p2, &qa, corner), seg_dist(&p2, corner, &qb)));
@@ -354,7 +395,7 @@ double tp_blend_worst(const tp_geo_t *blend, const tp_corner_t *c, const tp_blen
         if (quick <= 0.5 * tol)
             return quick;
         if (c->shape == TP_BLEND_G1 || (!spec->ka_set && !spec->kb_set))
-            return quintic_miss(&blend->u.q, &corner);
+            return septic_miss(&blend->u.q, &corner);
     }
     double miss, dev;
     tp_blend_deviation(blend, c, spec, &miss, &dev);

@@ -1,4 +1,4 @@
-/* tp_blend.h: curvature-continuous corner blends (quintic G2 Hermite) and their sizing within the tolerance. */
+/* tp_blend.h: curvature-continuous corner blends (degree-7 G2 Hermite) and their sizing within the tolerance. */
 #ifndef TP_BLEND_H
 #define TP_BLEND_H
 

@@ -1,4 +1,4 @@
-/* tp_geom.c: evaluation and derivative bounds of lines, arcs and quintic blends. */
+/* tp_geom.c: evaluation and derivative bounds of lines, arcs and degree-7 (septic) blends. */
 #include <math.h>
 #include <string.h>
 #include "tp_geom.h"
@@ -105,19 +105,19 @@ int tp_geo_arc(tp_geo_t *g, const tp_vec_t *start, const tp_vec_t *end, const do
     return g->len > TP_GEO_TINY ? 0 : -1;
 }
 
-/* Bernstein weights of degree n at u (n <= 5). */
+/* Bernstein weights of degree n at u (n <= TP_BEZ_DEG). */
 static void bernstein(int n, double u, double *w)
 {
-    static const double binom[6][6] = {
-        {1}, {1, 1}, {1, 2, 1}, {1, 3, 3, 1}, {1, 4, 6, 4, 1}, {1, 5, 10, 10, 5, 1}};
-    double pu[6], pv[6];
+    double pu[TP_BEZ_DEG + 1], pv[TP_BEZ_DEG + 1], binom = 1.0;
     pu[0] = pv[0] = 1.0;
     for (int k = 1; k <= n; k++) {
         pu[k] = pu[k - 1] * u;
         pv[k] = pv[k - 1] * (1.0 - u);
     }
-    for (int k = 0; k <= n; k++)
-        w[k] = binom[n][k] * pu[k] * pv[n - k];
+    for (int k = 0; k <= n; k++) {
+        w[k] = binom * pu[k] * pv[n - k];
+        binom = binom * (n - k) / (k + 1);
+    }
 }
 
 /* Sum of weighted control vectors. */
@@ -138,49 +138,56 @@ static void bez_diff(const tp_vec_t *c, int n, tp_vec_t *out)
             out[k].x[i] = n * (c[k + 1].x[i] - c[k].x[i]);
 }
 
-/* Power-basis coefficients of a quintic from its control points (for Horner evaluation). */
-static void quintic_power(tp_quintic_t *q)
+/* Power-basis coefficients from the control points (for Horner evaluation):
+ * c_k = C(n, k) * sum_j (-1)^(k-j) C(k, j) b_j. */
+static void septic_power(tp_septic_t *q)
 {
-    static const double m[6][6] = {{1, 0, 0, 0, 0, 0},      {-5, 5, 0, 0, 0, 0},
-                                   {10, -20, 10, 0, 0, 0},  {-10, 30, -30, 10, 0, 0},
-                                   {5, -20, 30, -20, 5, 0}, {-1, 5, -10, 10, -5, 1}};
-    for (int k = 0; k < 6; k++)
+    const int n = TP_BEZ_DEG;
+    double cnk = 1.0;
+    for (int k = 0; k <= n; k++) {
         for (int i = 0; i < TP_NAX; i++) {
-            double v = 0.0;
-            for (int j = 0; j <= k; j++)
-                v += m[k][j] * q->b[j].x[i];
-            q->c[k].x[i] = v;
+            double v = 0.0, ckj = 1.0;
+            for (int j = k; j >= 0; j--) {
+                v += ((k - j) & 1 ? -ckj : ckj) * q->b[j].x[i];
+                ckj = ckj * j / (k - j + 1);
+            }
+            q->c[k].x[i] = cnk * v;
         }
+        cnk = cnk * (n - k) / (k + 1);
+    }
 }
 
-/* Point of a quintic at u (Horner). */
-tp_vec_t tp_quintic_point(const tp_quintic_t *q, double u)
+/* Point of a septic at u (Horner). */
+tp_vec_t tp_septic_point(const tp_septic_t *q, double u)
 {
     tp_vec_t r;
     if (u >= 1.0)
-        return q->b[5];
+        return q->b[TP_BEZ_DEG];
     if (u <= 0.0)
         return q->b[0];
-    for (int i = 0; i < TP_NAX; i++)
-        r.x[i] = ((((q->c[5].x[i] * u + q->c[4].x[i]) * u + q->c[3].x[i]) * u + q->c[2].x[i]) * u +
-                  q->c[1].x[i]) * u + q->c[0].x[i];
+    for (int i = 0; i < TP_NAX; i++) {
+        double v = q->c[TP_BEZ_DEG].x[i];
+        for (int k = TP_BEZ_DEG - 1; k >= 0; k--)
+            v = v * u + q->c[k].x[i];
+        r.x[i] = v;
+    }
     return r;
 }
 
-/* Quintic position and derivatives w.r.t. length (u = s / len). */
-static tp_jet_t quintic_jet(const tp_geo_t *g, double s)
+/* Septic position and derivatives w.r.t. length (u = s / len). */
+static tp_jet_t septic_jet(const tp_geo_t *g, double s)
 {
-    tp_vec_t d1[5], d2[4];
-    double w[6], u = s / g->len;
+    tp_vec_t d1[TP_BEZ_DEG], d2[TP_BEZ_DEG - 1];
+    double w[TP_BEZ_DEG + 1], u = s / g->len;
     tp_jet_t j;
-    bez_diff(g->u.q.b, 5, d1);
-    bez_diff(d1, 4, d2);
-    j.p = tp_quintic_point(&g->u.q, u);
-    bernstein(4, u, w);
-    j.d1 = bez_sum(d1, w, 4);
+    bez_diff(g->u.q.b, TP_BEZ_DEG, d1);
+    bez_diff(d1, TP_BEZ_DEG - 1, d2);
+    j.p = tp_septic_point(&g->u.q, u);
+    bernstein(TP_BEZ_DEG - 1, u, w);
+    j.d1 = bez_sum(d1, w, TP_BEZ_DEG - 1);
     j.d1 = tp_vec_scale(&j.d1, 1.0 / g->len);
-    bernstein(3, u, w);
-    j.d2 = bez_sum(d2, w, 3);
+    bernstein(TP_BEZ_DEG - 2, u, w);
+    j.d2 = bez_sum(d2, w, TP_BEZ_DEG - 2);
     j.d2 = tp_vec_scale(&j.d2, 1.0 / (g->len * g->len));
     return j;
 }
@@ -219,8 +226,8 @@ tp_jet_t tp_geo_jet(const tp_geo_t *g, double s)
     case TP_GEO_ARC:
         j = arc_jet(g, s);
         break;
-    case TP_GEO_QUINTIC:
-        j = quintic_jet(g, s);
+    case TP_GEO_SEPTIC:
+        j = septic_jet(g, s);
         break;
     default:
         j.d1 = g->u.line.dir;
@@ -235,16 +242,16 @@ tp_jet_t tp_geo_jet(const tp_geo_t *g, double s)
 tp_vec_t tp_geo_eval(const tp_geo_t *g, double s)
 {
     if (s >= g->len)
-        return g->kind == TP_GEO_QUINTIC ? g->u.q.b[5] : g->kind == TP_GEO_ARC ? g->u.arc.end
+        return g->kind == TP_GEO_SEPTIC ? g->u.q.b[TP_BEZ_DEG] : g->kind == TP_GEO_ARC ? g->u.arc.end
                                                                           : g->u.line.end;
     if (s <= 0.0)
-        return g->kind == TP_GEO_QUINTIC ? g->u.q.b[0] : g->kind == TP_GEO_ARC ? g->u.arc.start
+        return g->kind == TP_GEO_SEPTIC ? g->u.q.b[0] : g->kind == TP_GEO_ARC ? g->u.arc.start
                                                                           : g->u.line.start;
     switch (g->kind) {
     case TP_GEO_ARC:
         return arc_jet(g, s).p;
-    case TP_GEO_QUINTIC:
-        return tp_quintic_point(&g->u.q, s / g->len);
+    case TP_GEO_SEPTIC:
+        return tp_septic_point(&g->u.q, s / g->len);
     default:
         if (s > 0.5 * g->len)
             return tp_vec_axpy(&g->u.line.end, s - g->len, &g->u.line.dir);
@@ -290,7 +297,7 @@ static void arc_bounds(const tp_geo_t *g, tp_bounds_t *b)
 /* de Casteljau restriction of a degree-n polynomial (one axis, control values c) to [u0, u1]. */
 static void bez_restrict1(const double *c, int n, double u0, double u1, double *out)
 {
-    double tmp[6];
+    double tmp[TP_BEZ_DEG + 1];
     /* split at u1, keep the left part; then split that at u0/u1, keep the right part */
     for (int k = 0; k <= n; k++)
         tmp[k] = c[k];
@@ -311,13 +318,13 @@ static void bez_restrict1(const double *c, int n, double u0, double u1, double *
     out[0] = tmp[0];
 }
 
-/* One derivative order of a quintic over [u0, u1]: from the control values of the previous order
+/* One derivative order of a septic over [u0, u1]: from the control values of the previous order
  * (n + 1 per axis, nax axes), this order's (n per axis, times n), restricted, their largest
  * |value| per axis and the largest metric norm (axes of the metric that do not move count 0). */
-static void order_bounds(double (*prev)[6], double (*next)[6], int n, int nax, const int *ax,
+static void order_bounds(double (*prev)[TP_BEZ_DEG + 1], double (*next)[TP_BEZ_DEG + 1], int n, int nax, const int *ax,
                          const int *mq, double u0, double u1, double scale, double *out)
 {
-    double r[TP_NAX][6];
+    double r[TP_NAX][TP_BEZ_DEG + 1];
     for (int i = 0; i < TP_NBOUND; i++)
         out[i] = 0.0;
     for (int q = 0; q < nax; q++) {
@@ -340,29 +347,45 @@ static void order_bounds(double (*prev)[6], double (*next)[6], int n, int nax, c
     out[TP_PATH_AX] = norm * scale;
 }
 
-/* Quintic bounds over [s0, s1] from the restricted derivative polygons (convex hull); only the
+/* Septic bounds over [s0, s1] from the restricted derivative polygons (convex hull); only the
  * axes that move are computed (the others have no derivatives). */
-static void quintic_bounds(const tp_geo_t *g, double s0, double s1, tp_bounds_t *b)
+static void septic_bounds(const tp_geo_t *g, double s0, double s1, tp_bounds_t *b)
 {
-    double p[TP_NAX][6], d1[TP_NAX][6], d2[TP_NAX][6], d3[TP_NAX][6];
+    double p[TP_NAX][TP_BEZ_DEG + 1], d1[TP_NAX][TP_BEZ_DEG + 1];
+    double d2[TP_NAX][TP_BEZ_DEG + 1], d3[TP_NAX][TP_BEZ_DEG + 1];
     double u0 = s0 / g->len, u1 = s1 / g->len, L = g->len;
     int ax[TP_NAX], nax = 0, first = tp_metric_first(g->metric), mq[3] = {-1, -1, -1};
     for (int i = 0; i < TP_NAX; i++) {
         int moves = 0;
-        for (int k = 1; k <= 5 && !moves; k++)
+        for (int k = 1; k <= TP_BEZ_DEG && !moves; k++)
             moves = g->u.q.b[k].x[i] != g->u.q.b[0].x[i];
         if (!moves)
             continue;
         if (i >= first && i < first + 3)
             mq[i - first] = nax;
-        for (int k = 0; k <= 5; k++)
+        for (int k = 0; k <= TP_BEZ_DEG; k++)
             p[nax][k] = g->u.q.b[k].x[i];
         ax[nax++] = i;
     }
     memset(b->phase, 0, sizeof(b->phase));
-    order_bounds(p, d1, 5, nax, ax, mq, u0, u1, 1.0 / L, b->d1);
-    order_bounds(d1, d2, 4, nax, ax, mq, u0, u1, 1.0 / (L * L), b->d2);
-    order_bounds(d2, d3, 3, nax, ax, mq, u0, u1, 1.0 / (L * L * L), b->d3);
+    order_bounds(p, d1, TP_BEZ_DEG, nax, ax, mq, u0, u1, 1.0 / L, b->d1);
+    order_bounds(d1, d2, TP_BEZ_DEG - 1, nax, ax, mq, u0, u1, 1.0 / (L * L), b->d2);
+    order_bounds(d2, d3, TP_BEZ_DEG - 2, nax, ax, mq, u0, u1, 1.0 / (L * L * L), b->d3);
+}
+
+/* Bounds over [s0, s1] as the larger of its halves' (the hull of a degree-7 polygon is loose over
+ * a long range; halves give caps about 2 % higher at twice the cost). */
+static void septic_bounds_split(const tp_geo_t *g, double s0, double s1, tp_bounds_t *b)
+{
+    tp_bounds_t t;
+    double sm = 0.5 * (s0 + s1);
+    septic_bounds(g, s0, sm, b);
+    septic_bounds(g, sm, s1, &t);
+    for (int i = 0; i < TP_NBOUND; i++) {
+        b->d1[i] = fmax(b->d1[i], t.d1[i]);
+        b->d2[i] = fmax(b->d2[i], t.d2[i]);
+        b->d3[i] = fmax(b->d3[i], t.d3[i]);
+    }
 }
 
 /* Derivative bounds over [s0, s1]. */
@@ -372,8 +395,8 @@ void tp_geo_bounds(const tp_geo_t *g, double s0, double s1, tp_bounds_t *b)
     case TP_GEO_ARC:
         arc_bounds(g, b);
         break;
-    case TP_GEO_QUINTIC:
-        quintic_bounds(g, s0, s1, b);
+    case TP_GEO_SEPTIC:
+        septic_bounds_split(g, s0, s1, b);
         break;
     default:
         line_bounds(g, b);
@@ -381,21 +404,23 @@ void tp_geo_bounds(const tp_geo_t *g, double s0, double s1, tp_bounds_t *b)
     }
 }
 
-/* Speed |dp/du| of a quintic at u in the three axes from first on (Horner). */
-static double quintic_speed3(const tp_quintic_t *q, int first, double u)
+/* Speed |dp/du| of a septic at u in the three axes from first on (Horner). */
+static double septic_speed3(const tp_septic_t *q, int first, double u)
 {
     double d[3];
     for (int k = 0; k < 3; k++) {
         int i = first + k;
-        d[k] = (((5.0 * q->c[5].x[i] * u + 4.0 * q->c[4].x[i]) * u + 3.0 * q->c[3].x[i]) * u +
-                2.0 * q->c[2].x[i]) * u + q->c[1].x[i];
+        double v = TP_BEZ_DEG * q->c[TP_BEZ_DEG].x[i];
+        for (int j = TP_BEZ_DEG - 1; j >= 1; j--)
+            v = v * u + j * q->c[j].x[i];
+        d[k] = v;
     }
     return sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
 }
 
-/* Length of a quintic in a metric: Gauss-Legendre with 8 nodes on |dp/du| (only the metric's
+/* Length of a septic in a metric: Gauss-Legendre with 8 nodes on |dp/du| (only the metric's
  * axes are evaluated: blends are built several times per corner). */
-double tp_quintic_length(const tp_quintic_t *q, tp_metric_t m)
+double tp_septic_length(const tp_septic_t *q, tp_metric_t m)
 {
     static const double xg[4] = {0.1834346424956498, 0.5255324099163290, 0.7966664774136267,
                                  0.9602898564975363};
@@ -405,22 +430,27 @@ double tp_quintic_length(const tp_quintic_t *q, tp_metric_t m)
     int first = tp_metric_first(m);
     for (int k = 0; k < 8; k++) {
         double u = 0.5 + 0.5 * (k < 4 ? -xg[k] : xg[k - 4]);
-        sum += (k < 4 ? wg[k] : wg[k - 4]) * quintic_speed3(q, first, u);
+        sum += (k < 4 ? wg[k] : wg[k - 4]) * septic_speed3(q, first, u);
     }
     return 0.5 * sum;
 }
 
-/* G2 Hermite quintic: p(0)=a.p, p'(0)=lam a.d1, p''(0)=lam^2 a.d2, likewise at 1. */
-void tp_quintic_hermite(tp_quintic_t *q, const tp_jet_t *a, const tp_jet_t *b, double lam)
+/* G2 Hermite of degree 7: position, first, second and third derivative (a3, b3; NULL for zero)
+ * at both ends, the derivatives w.r.t. u = s / lam. */
+void tp_septic_hermite(tp_septic_t *q, const tp_jet_t *a, const tp_jet_t *b, double lam,
+                       const tp_vec_t *a3, const tp_vec_t *b3)
 {
-    double l2 = lam * lam;
+    double l1 = lam / 7.0, l2 = lam * lam / 42.0, l3 = lam * lam * lam / 210.0;
     for (int i = 0; i < TP_NAX; i++) {
+        double ja = a3 ? a3->x[i] : 0.0, jb = b3 ? b3->x[i] : 0.0;
         q->b[0].x[i] = a->p.x[i];
-        q->b[1].x[i] = a->p.x[i] + lam * a->d1.x[i] / 5.0;
-        q->b[2].x[i] = a->p.x[i] + 2.0 * lam * a->d1.x[i] / 5.0 + l2 * a->d2.x[i] / 20.0;
-        q->b[5].x[i] = b->p.x[i];
-        q->b[4].x[i] = b->p.x[i] - lam * b->d1.x[i] / 5.0;
-        q->b[3].x[i] = b->p.x[i] - 2.0 * lam * b->d1.x[i] / 5.0 + l2 * b->d2.x[i] / 20.0;
+        q->b[1].x[i] = a->p.x[i] + l1 * a->d1.x[i];
+        q->b[2].x[i] = a->p.x[i] + 2.0 * l1 * a->d1.x[i] + l2 * a->d2.x[i];
+        q->b[3].x[i] = a->p.x[i] + 3.0 * l1 * a->d1.x[i] + 3.0 * l2 * a->d2.x[i] + l3 * ja;
+        q->b[7].x[i] = b->p.x[i];
+        q->b[6].x[i] = b->p.x[i] - l1 * b->d1.x[i];
+        q->b[5].x[i] = b->p.x[i] - 2.0 * l1 * b->d1.x[i] + l2 * b->d2.x[i];
+        q->b[4].x[i] = b->p.x[i] - 3.0 * l1 * b->d1.x[i] + 3.0 * l2 * b->d2.x[i] - l3 * jb;
     }
-    quintic_power(q);
+    septic_power(q);
 }

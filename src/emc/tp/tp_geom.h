@@ -1,4 +1,4 @@
-/* tp_geom.h: path geometry: lines, arcs (helix, spiral, extra axes) and quintic blends, parameterised by length. */
+/* tp_geom.h: path geometry: lines, arcs (helix, spiral, extra axes) and degree-7 (septic) blends, parameterised by length. */
 #ifndef TP_GEOM_H
 #define TP_GEOM_H
 
@@ -11,7 +11,7 @@
 typedef enum tp_geo_kind {
     TP_GEO_LINE = 0,
     TP_GEO_ARC = 1,
-    TP_GEO_QUINTIC = 2
+    TP_GEO_SEPTIC = 2
 } tp_geo_kind_t;
 
 /* Straight move: p(s) = start + dir s, s in [0, len]. */
@@ -30,11 +30,13 @@ typedef struct tp_arc {
     double h;                   /* displacement along the normal */
 } tp_arc_t;
 
-/* Quintic Bezier blend: u = s / len in [0, 1]; c holds the same polynomial in powers of u. */
-typedef struct tp_quintic {
-    tp_vec_t b[6];
-    tp_vec_t c[6];
-} tp_quintic_t;
+/* Degree-7 (septic) Bezier blend: u = s / len in [0, 1]; c holds the same polynomial in powers of u. */
+#define TP_BEZ_DEG 7
+
+typedef struct tp_septic {
+    tp_vec_t b[TP_BEZ_DEG + 1];
+    tp_vec_t c[TP_BEZ_DEG + 1];
+} tp_septic_t;
 
 typedef struct tp_geo {
     tp_geo_kind_t kind;
@@ -43,7 +45,7 @@ typedef struct tp_geo {
     union {
         tp_line_t line;
         tp_arc_t arc;
-        tp_quintic_t q;
+        tp_septic_t q;
     } u;
 } tp_geo_t;
 
@@ -74,11 +76,13 @@ tp_vec_t tp_geo_eval(const tp_geo_t *g, double s);
 tp_jet_t tp_geo_jet(const tp_geo_t *g, double s);
 /* Derivative bounds over [s0, s1]. */
 void tp_geo_bounds(const tp_geo_t *g, double s0, double s1, tp_bounds_t *b);
-/* Length of a quintic in metric m (8-point Gauss-Legendre). */
-double tp_quintic_length(const tp_quintic_t *q, tp_metric_t m);
-/* Quintic G2 Hermite: position, unit-length tangent and curvature vector at both ends, scale lam. */
-void tp_quintic_hermite(tp_quintic_t *q, const tp_jet_t *a, const tp_jet_t *b, double lam);
-/* Point of a quintic at u in [0, 1]. */
-tp_vec_t tp_quintic_point(const tp_quintic_t *q, double u);
+/* Length of a septic in metric m (8-point Gauss-Legendre). */
+double tp_septic_length(const tp_septic_t *q, tp_metric_t m);
+/* Septic G2 Hermite: position, unit-length tangent, curvature vector and third derivative (a3, b3;
+ * NULL for zero) at both ends, scale lam. */
+void tp_septic_hermite(tp_septic_t *q, const tp_jet_t *a, const tp_jet_t *b, double lam,
+                       const tp_vec_t *a3, const tp_vec_t *b3);
+/* Point of a septic at u in [0, 1]. */
+tp_vec_t tp_septic_point(const tp_septic_t *q, double u);
 
 #endif
