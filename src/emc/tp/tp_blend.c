@@ -24,23 +24,52 @@ static tp_vec_t perp_unit(const tp_vec_t *u, const tp_vec_t *t)
     return n > 1e-12 ? tp_vec_scale(&w, 1.0 / n) : zero;
 }
 
-/* Third derivatives at the blend's ends: the curvature runs towards a peak in the middle, a
- * triangle of the turn's area from the end curvatures (the shape that turns with the least
- * curvature change, as a clothoid pair), with TP_BLEND_RAMP of that slope (the polynomial
- * cannot follow the triangle's apex; a full slope overshoots it). */
+/* Third derivatives (w.r.t. s) at the ends of the quintic G2 Hermite of the same end data and
+ * scale: a septic with these is that quintic, whose curvature starts flat. */
+static void quintic_thirds(const tp_jet_t *a, const tp_jet_t *b, double lam, tp_vec_t *a3, tp_vec_t *b3)
+{
+    double l1 = lam / 5.0, l2 = lam * lam / 20.0, k = 60.0 / (lam * lam * lam);
+    for (int i = 0; i < TP_NAX; i++) {
+        double q0 = a->p.x[i], q1 = q0 + l1 * a->d1.x[i], q2 = q0 + 2.0 * l1 * a->d1.x[i] + l2 * a->d2.x[i];
+        double q5 = b->p.x[i], q4 = q5 - l1 * b->d1.x[i], q3 = q5 - 2.0 * l1 * b->d1.x[i] + l2 * b->d2.x[i];
+        a3->x[i] = k * (q3 - 3.0 * q2 + 3.0 * q1 - q0);
+        b3->x[i] = k * (q5 - 3.0 * q4 + 3.0 * q3 - q2);
+    }
+}
+
+/* How much of the ramp a turn takes: curvature ka -> kp -> kb (in the turn's frame) at slopes sa
+ * and sb.  All of it for a peak between straight ends (a corner); less as the ends carry
+ * curvature; none without a peak (a tangent join's or a carried arc's curvature runs straight,
+ * which the quintic already follows). */
+static double ramp_weight(double ka, double kb, double kp, double sa, double sb)
+{
+    if (!(sa > 0.0 && sb < 0.0))
+        return 0.0;
+    double apex = fabs(sa - sb) / (fabs(sa) + fabs(sb));
+    return apex * fmax(0.0, 1.0 - 0.5 * (fabs(ka) + fabs(kb)) / kp);
+}
+
+/* Third derivatives at the blend's ends.  A corner's curvature best runs up to a peak in the
+ * middle and down again, a triangle of the turn's area (the clothoid pair turns with the least
+ * curvature change); the ends take TP_BLEND_RAMP of its slope (the polynomial cannot follow
+ * the apex; the full slope overshoots it), weighed against the quintic's by ramp_weight. */
 static void end_thirds(const tp_jet_t *a, const tp_jet_t *b, double lam, tp_vec_t *a3, tp_vec_t *b3)
 {
-    const double c = TP_BLEND_RAMP;
     double na = sqrt(tp_vec_dot(&a->d1, &a->d1)), nb = sqrt(tp_vec_dot(&b->d1, &b->d1));
     double cs = na > 0.0 && nb > 0.0 ? tp_vec_dot(&a->d1, &b->d1) / (na * nb) : 1.0;
     double th = acos(fmax(-1.0, fmin(1.0, cs))), d = 0.5 * lam;
     tp_vec_t wa = perp_unit(&b->d1, &a->d1), wb = perp_unit(&a->d1, &b->d1);
     double ka = tp_vec_dot(&a->d2, &wa), kb = -tp_vec_dot(&b->d2, &wb);
-    double kp = th / d - 0.5 * (ka + kb);
-    *a3 = tp_vec_scale(&wa, c * (kp - ka) / d);
-    *a3 = tp_vec_axpy(a3, -tp_vec_dot(&a->d2, &a->d2), &a->d1);
-    *b3 = tp_vec_scale(&wb, c * (kp - kb) / d);
-    *b3 = tp_vec_axpy(b3, -tp_vec_dot(&b->d2, &b->d2), &b->d1);
+    double kp = th / d - 0.5 * (ka + kb), sa = (kp - ka) / d, sb = (kb - kp) / d;
+    double w = ramp_weight(ka, kb, kp, sa, sb);
+    tp_vec_t ra = tp_vec_scale(&wa, TP_BLEND_RAMP * sa), rb = tp_vec_scale(&wb, -TP_BLEND_RAMP * sb);
+    ra = tp_vec_axpy(&ra, -tp_vec_dot(&a->d2, &a->d2), &a->d1);
+    rb = tp_vec_axpy(&rb, -tp_vec_dot(&b->d2, &b->d2), &b->d1);
+    quintic_thirds(a, b, lam, a3, b3);
+    for (int i = 0; i < TP_NAX; i++) {
+        a3->x[i] += w * (ra.x[i] - a3->x[i]);
+        b3->x[i] += w * (rb.x[i] - b3->x[i]);
+    }
 }
 
 /* Degree-7 blend with scale lam matching its own length (so length is the parameter). */

@@ -122,17 +122,117 @@ static void blend_corner(double deg, double tol)
     tp_bounds_t bd;
     tp_geo_bounds(&bl, 0.0, bl.len, &bd);
     int over = 0;
+    double h = bl.len / 400.0;
+    tp_jet_t prev = tp_geo_jet(&bl, 0.0);
     for (int k = 0; k <= 400; k++) {
-        tp_jet_t j = tp_geo_jet(&bl, bl.len * k / 400.0);
-        for (int i = 0; i < TP_NAX; i++)
-            if (fabs(j.d1.x[i]) > bd.d1[i] * (1 + 1e-12) + 1e-15 || fabs(j.d2.x[i]) > bd.d2[i] * (1 + 1e-12) + 1e-12)
+        tp_jet_t j = tp_geo_jet(&bl, h * k);
+        for (int i = 0; i < TP_NAX; i++) {
+            double d3 = k > 0 ? fabs(j.d2.x[i] - prev.d2.x[i]) / h : 0.0;   /* mean over the step */
+            if (fabs(j.d1.x[i]) > bd.d1[i] * (1 + 1e-12) + 1e-15 || fabs(j.d2.x[i]) > bd.d2[i] * (1 + 1e-12) + 1e-12 ||
+                d3 > bd.d3[i] * (1 + 1e-9) + 1e-9)
                 over++;
+        }
+        prev = j;
     }
     CHECK(g0 < 1e-9 && g1 < 1e-9, "%g deg: joins not G2 (%g %g)", deg, g0, g1);
     CHECK(miss <= tol * (1 + 1e-9) && dev <= tol * (1 + 1e-9), "%g deg: miss %g dev %g above %g", deg, miss, dev, tol);
     CHECK(over == 0, "%g deg: %d samples above the derivative bounds", deg, over);
     printf("blend %5.1f deg tol %g: G2 joins, vertex miss %s tolerance, bounds hold\n", deg, tol,
            miss <= tol * (1 + 1e-9) ? "within" : "beyond");
+}
+
+/* A random vector of the first three axes (the others zero). */
+static tp_vec_t rand_vec3(double scale)
+{
+    tp_vec_t v;
+    memset(&v, 0, sizeof(v));
+    for (int i = 0; i < 3; i++)
+        v.x[i] = scale * (2.0 * urand() - 1.0);
+    return v;
+}
+
+/* Largest difference over the first three axes. */
+static double vec_gap(const tp_vec_t *a, const tp_vec_t *b)
+{
+    double g = 0.0;
+    for (int i = 0; i < 3; i++)
+        g = fmax(g, fabs(a->x[i] - b->x[i]));
+    return g;
+}
+
+/* Derivative of order r (0 to 3) at u of the septic's power form, per axis. */
+static tp_vec_t septic_deriv(const tp_septic_t *q, int r, double u)
+{
+    tp_vec_t out;
+    for (int i = 0; i < TP_NAX; i++) {
+        double v = 0.0;
+        for (int k = TP_BEZ_DEG; k >= r; k--) {
+            double f = 1.0;
+            for (int m = 0; m < r; m++)
+                f *= k - m;
+            v = v * u + f * q->c[k].x[i];
+        }
+        out.x[i] = v;
+    }
+    return out;
+}
+
+/* The septic Hermite takes its end data: position and first three derivatives (w.r.t. s = u lam),
+ * read back from its power form. */
+static void septic_ends(int n)
+{
+    int bad = 0;
+    for (int k = 0; k < n; k++) {
+        tp_jet_t a, b;
+        a.p = rand_vec3(10.0), a.d1 = rand_vec3(1.0), a.d2 = rand_vec3(3.0);
+        b.p = rand_vec3(10.0), b.d1 = rand_vec3(1.0), b.d2 = rand_vec3(3.0);
+        tp_vec_t a3 = rand_vec3(5.0), b3 = rand_vec3(5.0);
+        double lam = 0.1 + 5.0 * urand();
+        tp_septic_t q;
+        tp_septic_hermite(&q, &a, &b, lam, &a3, &b3);
+        const tp_vec_t *want[2][4] = {{&a.p, &a.d1, &a.d2, &a3}, {&b.p, &b.d1, &b.d2, &b3}};
+        for (int side = 0; side < 2; side++)
+            for (int r = 0; r <= 3; r++) {
+                tp_vec_t got = septic_deriv(&q, r, side);
+                got = tp_vec_scale(&got, pow(lam, -r));
+                if (!(vec_gap(&got, want[side][r]) < 1e-9 * (1.0 + pow(lam, -r))))
+                    bad++;
+            }
+    }
+    CHECK(bad == 0, "%d of %d septic end values do not match their data", bad, 8 * n);
+    printf("septic Hermite: %d random end pairs, %d end values off their data\n", n, bad);
+}
+
+/* A G1 blend of unequal cuts is the parabola between the cut points whose tangents meet at the
+ * corner, reparameterised by w = u + c u (1 - u): checked point by point. */
+static void g1_parabola(void)
+{
+    tp_geo_t a, b, bl;
+    tp_vec_t p0 = {{0}}, p1 = {{10, 0, 0}}, p2;
+    memset(&p2, 0, sizeof(p2));
+    p2.x[0] = 10 + 10 * cos(M_PI / 3.0);
+    p2.x[1] = 10 * sin(M_PI / 3.0);
+    tp_geo_line(&a, &p0, &p1);
+    tp_geo_line(&b, &p1, &p2);
+    tp_corner_t c;
+    tp_corner_describe(&c, &a, &b);
+    c.shape = TP_BLEND_G1;
+    tp_blend_spec_t spec;
+    memset(&spec, 0, sizeof(spec));
+    spec.da = 1.0;
+    spec.db = 3.0;
+    CHECK(tp_blend_build(&bl, &c, &spec) == 0, "G1 blend not built");
+    tp_vec_t qa = tp_geo_eval(&a, a.len - spec.da), qb = tp_geo_eval(&b, spec.db);
+    double cw = (spec.db - spec.da) / (spec.da + spec.db), worst = 0.0;
+    for (int k = 0; k <= 50; k++) {
+        double u = k / 50.0, w = u + cw * u * (1.0 - u);
+        tp_vec_t want, got = tp_geo_eval(&bl, bl.len * u);
+        for (int i = 0; i < TP_NAX; i++)
+            want.x[i] = (1 - w) * (1 - w) * qa.x[i] + 2 * w * (1 - w) * p1.x[i] + w * w * qb.x[i];
+        worst = fmax(worst, vec_gap(&want, &got));
+    }
+    CHECK(worst < 1e-9, "G1 blend leaves its parabola by %g", worst);
+    printf("G1 blend of cuts 1 and 3: %s its reparameterised parabola\n", worst < 1e-9 ? "on" : "off");
 }
 
 /* Caps of a straight move are the per-axis limits projected on its direction. */
@@ -260,6 +360,8 @@ int main(void)
     blend_corner(170.0, 0.05);
     blend_corner(0.5, 0.01);
     blend_speed_inverse();
+    septic_ends(2000);
+    g1_parabola();
     if (failures)
         printf("%d check(s) failed\n", failures);
     else
