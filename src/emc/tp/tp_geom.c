@@ -138,22 +138,20 @@ static void bez_diff(const tp_vec_t *c, int n, tp_vec_t *out)
             out[k].x[i] = n * (c[k + 1].x[i] - c[k].x[i]);
 }
 
-/* Power-basis coefficients from the control points (for Horner evaluation):
- * c_k = C(n, k) * sum_j (-1)^(k-j) C(k, j) b_j. */
+/* Power-basis coefficients from the control points (for Horner evaluation): c_k = C(n, k)
+ * times the k-th forward difference of the control points at 0. */
 static void septic_power(tp_septic_t *q)
 {
-    const int n = TP_BEZ_DEG;
-    double cnk = 1.0;
-    for (int k = 0; k <= n; k++) {
-        for (int i = 0; i < TP_NAX; i++) {
-            double v = 0.0, ckj = 1.0;
-            for (int j = k; j >= 0; j--) {
-                v += ((k - j) & 1 ? -ckj : ckj) * q->b[j].x[i];
-                ckj = ckj * j / (k - j + 1);
-            }
-            q->c[k].x[i] = cnk * v;
+    static const double binom[TP_BEZ_DEG + 1] = {1, 7, 21, 35, 35, 21, 7, 1};
+    for (int i = 0; i < TP_NAX; i++) {
+        double d[TP_BEZ_DEG + 1];
+        for (int k = 0; k <= TP_BEZ_DEG; k++)
+            d[k] = q->b[k].x[i];
+        for (int k = 0; k <= TP_BEZ_DEG; k++) {
+            q->c[k].x[i] = binom[k] * d[0];
+            for (int m = 0; m < TP_BEZ_DEG - k; m++)
+                d[m] = d[m + 1] - d[m];
         }
-        cnk = cnk * (n - k) / (k + 1);
     }
 }
 
@@ -318,74 +316,82 @@ static void bez_restrict1(const double *c, int n, double u0, double u1, double *
     out[0] = tmp[0];
 }
 
-/* One derivative order of a septic over [u0, u1]: from the control values of the previous order
- * (n + 1 per axis, nax axes), this order's (n per axis, times n), restricted, their largest
- * |value| per axis and the largest metric norm (axes of the metric that do not move count 0). */
-static void order_bounds(double (*prev)[TP_BEZ_DEG + 1], double (*next)[TP_BEZ_DEG + 1], int n, int nax, const int *ax,
-                         const int *mq, double u0, double u1, double scale, double *out)
+/* Split a polygon (one axis, degree n) at its middle: left and right halves. */
+static void bez_halves(const double *c, int n, double *left, double *right)
 {
-    double r[TP_NAX][TP_BEZ_DEG + 1];
-    for (int i = 0; i < TP_NBOUND; i++)
-        out[i] = 0.0;
-    for (int q = 0; q < nax; q++) {
-        for (int k = 0; k < n; k++)
-            next[q][k] = n * (prev[q][k + 1] - prev[q][k]);
-        bez_restrict1(next[q], n - 1, u0, u1, r[q]);
-        double m = 0.0;
-        for (int k = 0; k < n; k++)
-            m = fmax(m, fabs(r[q][k]));
-        out[ax[q]] = m * scale;
+    double tmp[TP_BEZ_DEG + 1];
+    for (int k = 0; k <= n; k++)
+        tmp[k] = c[k];
+    for (int r = 0; r <= n; r++) {
+        left[r] = tmp[0];
+        right[n - r] = tmp[n - r];
+        for (int k = 0; k < n - r; k++)
+            tmp[k] = 0.5 * (tmp[k] + tmp[k + 1]);
     }
-    double norm = 0.0;
-    for (int k = 0; k < n; k++) {
-        double x = mq[0] >= 0 ? r[mq[0]][k] : 0.0, y = mq[1] >= 0 ? r[mq[1]][k] : 0.0;
-        double z = mq[2] >= 0 ? r[mq[2]][k] : 0.0;
-        double nk = sqrt(x * x + y * y + z * z);
-        if (nk > norm)
-            norm = nk;
-    }
-    out[TP_PATH_AX] = norm * scale;
 }
 
-/* Septic bounds over [s0, s1] from the restricted derivative polygons (convex hull); only the
- * axes that move are computed (the others have no derivatives). */
+/* Fold the hull bounds of one order into out (largest |value| per axis and largest metric norm
+ * of the control vectors; a metric axis that does not move counts 0). */
+static void fold_order(double (*d)[TP_BEZ_DEG + 1], int m, int nax, const int *ax, const int *mq,
+                       double scale, double *out)
+{
+    for (int q = 0; q < nax; q++)
+        for (int k = 0; k < m; k++)
+            out[ax[q]] = fmax(out[ax[q]], fabs(d[q][k]) * scale);
+    for (int k = 0; k < m; k++) {
+        double x = mq[0] >= 0 ? d[mq[0]][k] : 0.0, y = mq[1] >= 0 ? d[mq[1]][k] : 0.0;
+        double z = mq[2] >= 0 ? d[mq[2]][k] : 0.0;
+        out[TP_PATH_AX] = fmax(out[TP_PATH_AX], sqrt(x * x + y * y + z * z) * scale);
+    }
+}
+
+/* Fold the first three derivatives' hulls of polygons restricted to a span du of the parameter
+ * (nax axes; the derivative of a restricted polygon is the restricted derivative, times 1/du). */
+static void fold_derivs(double (*r)[TP_BEZ_DEG + 1], int nax, const int *ax, const int *mq,
+                        double du, double len, tp_bounds_t *b)
+{
+    double d[TP_NAX][TP_BEZ_DEG + 1];
+    double *outs[3] = {b->d1, b->d2, b->d3}, scale = 1.0;
+    for (int q = 0; q < nax; q++)
+        for (int k = 0; k <= TP_BEZ_DEG; k++)
+            d[q][k] = r[q][k];
+    for (int o = 0; o < 3; o++) {
+        int n = TP_BEZ_DEG - o;           /* degree of the polygon being differenced */
+        for (int q = 0; q < nax; q++)
+            for (int k = 0; k < n; k++)
+                d[q][k] = n * (d[q][k + 1] - d[q][k]);
+        scale /= du * len;
+        fold_order(d, n, nax, ax, mq, scale, outs[o]);
+    }
+}
+
+/* Septic bounds over [s0, s1]: the control polygon (relative to its first point, so rounding
+ * scales with the blend, not with the coordinates) restricted once, split in halves (the hull of
+ * a degree-7 polygon is loose over a long range; halves give caps about 2 % higher), and the
+ * derivative hulls of each half.  Only the axes that move are computed. */
 static void septic_bounds(const tp_geo_t *g, double s0, double s1, tp_bounds_t *b)
 {
-    double p[TP_NAX][TP_BEZ_DEG + 1], d1[TP_NAX][TP_BEZ_DEG + 1];
-    double d2[TP_NAX][TP_BEZ_DEG + 1], d3[TP_NAX][TP_BEZ_DEG + 1];
-    double u0 = s0 / g->len, u1 = s1 / g->len, L = g->len;
+    double r[TP_NAX][TP_BEZ_DEG + 1], lo[TP_NAX][TP_BEZ_DEG + 1], hi[TP_NAX][TP_BEZ_DEG + 1];
+    double u0 = s0 / g->len, u1 = s1 / g->len;
     int ax[TP_NAX], nax = 0, first = tp_metric_first(g->metric), mq[3] = {-1, -1, -1};
+    memset(b, 0, sizeof(*b));
     for (int i = 0; i < TP_NAX; i++) {
+        double c[TP_BEZ_DEG + 1];
         int moves = 0;
-        for (int k = 1; k <= TP_BEZ_DEG && !moves; k++)
-            moves = g->u.q.b[k].x[i] != g->u.q.b[0].x[i];
+        for (int k = 0; k <= TP_BEZ_DEG; k++) {
+            c[k] = g->u.q.b[k].x[i] - g->u.q.b[0].x[i];
+            moves |= c[k] != 0.0;
+        }
         if (!moves)
             continue;
         if (i >= first && i < first + 3)
             mq[i - first] = nax;
-        for (int k = 0; k <= TP_BEZ_DEG; k++)
-            p[nax][k] = g->u.q.b[k].x[i];
+        bez_restrict1(c, TP_BEZ_DEG, u0, u1, r[nax]);
+        bez_halves(r[nax], TP_BEZ_DEG, lo[nax], hi[nax]);
         ax[nax++] = i;
     }
-    memset(b->phase, 0, sizeof(b->phase));
-    order_bounds(p, d1, TP_BEZ_DEG, nax, ax, mq, u0, u1, 1.0 / L, b->d1);
-    order_bounds(d1, d2, TP_BEZ_DEG - 1, nax, ax, mq, u0, u1, 1.0 / (L * L), b->d2);
-    order_bounds(d2, d3, TP_BEZ_DEG - 2, nax, ax, mq, u0, u1, 1.0 / (L * L * L), b->d3);
-}
-
-/* Bounds over [s0, s1] as the larger of its halves' (the hull of a degree-7 polygon is loose over
- * a long range; halves give caps about 2 % higher at twice the cost). */
-static void septic_bounds_split(const tp_geo_t *g, double s0, double s1, tp_bounds_t *b)
-{
-    tp_bounds_t t;
-    double sm = 0.5 * (s0 + s1);
-    septic_bounds(g, s0, sm, b);
-    septic_bounds(g, sm, s1, &t);
-    for (int i = 0; i < TP_NBOUND; i++) {
-        b->d1[i] = fmax(b->d1[i], t.d1[i]);
-        b->d2[i] = fmax(b->d2[i], t.d2[i]);
-        b->d3[i] = fmax(b->d3[i], t.d3[i]);
-    }
+    fold_derivs(lo, nax, ax, mq, 0.5 * (u1 - u0), g->len, b);
+    fold_derivs(hi, nax, ax, mq, 0.5 * (u1 - u0), g->len, b);
 }
 
 /* Derivative bounds over [s0, s1]. */
@@ -396,7 +402,7 @@ void tp_geo_bounds(const tp_geo_t *g, double s0, double s1, tp_bounds_t *b)
         arc_bounds(g, b);
         break;
     case TP_GEO_SEPTIC:
-        septic_bounds_split(g, s0, s1, b);
+        septic_bounds(g, s0, s1, b);
         break;
     default:
         line_bounds(g, b);
