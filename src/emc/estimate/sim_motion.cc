@@ -214,6 +214,7 @@ bool SimMotion::cmd_spindle(const emcmot_command_t &c, std::string *error)
         css_factor_[s] = on ? c.css_factor : 0.0;
         css_xoffset_[s] = c.css_xoffset;
     }
+    if (c.wait_for_at_speed) atspeed_next_feed_ = true;    // as motion: the next feed move waits
     return true;
 }
 
@@ -287,6 +288,7 @@ bool SimMotion::queue_move(const emcmot_command_t &c, std::string *error)
     seg.jerk = c.jerk;
     seg.enables = (fs_enabled_ ? TP_ENABLE_FS : 0) | (fh_enabled_ ? TP_ENABLE_FH : 0) |
                   (af_enabled_ ? TP_ENABLE_AF : 0) | (in_.num_spindles > 0 ? TP_ENABLE_SS : 0);
+    seg.atspeed = seg.motion_type != TP_MOTION_TRAVERSE && atspeed_next_feed_;
     seg.indexer_jnum = -1;
     seg.tap_uu_per_rev = c.tap_pitch != 0.0 ? c.tap_pitch : spindle_sync_;
     seg.id = c.id;
@@ -297,6 +299,7 @@ bool SimMotion::queue_move(const emcmot_command_t &c, std::string *error)
         *error = "can't add move at line " + std::to_string(c.id) + " (planner result " + std::to_string((int)r) + ")";
         return false;
     }
+    if (seg.atspeed) atspeed_next_feed_ = false;
     queued_end_ = c.pos;
     return true;
 }

@@ -83,6 +83,7 @@ private:
     double axis_min_[EMCMOT_MAX_AXIS], axis_max_[EMCMOT_MAX_AXIS];
     bool fs_enabled_ = true, fh_enabled_ = true, af_enabled_ = false;
     double spindle_sync_ = 0.0;
+    bool atspeed_next_feed_ = false;   // a spindle change asked the next feed move to wait for at-speed
     double spindle_rpm_[TP_MAX_SPINDLES] = {};
     double css_factor_[TP_MAX_SPINDLES] = {};
     double css_xoffset_[TP_MAX_SPINDLES] = {};
