@@ -140,10 +140,11 @@ static void piece_region(tp_planner_t *tp, const tp_geo_t *g, double u0, double 
     r->s0 = tp->s_emit;
     r->len = u1 - u0;
     double v_need = need_speed(tp, owner);
-    r->v_mach = c.v >= v_need ? v_need : quantize(c.v);
     /* a straight piece keeps the machine's limits exactly (a lone G0 accelerates at
-     * MAX_ACCELERATION, as in LinuxCNC); curved pieces round down to the grid */
+     * MAX_ACCELERATION and cruises at the speed its axes allow, as in LinuxCNC, however close
+     * the requested speed is to it); curved pieces round down to the grid */
     int straight = b.d2[TP_PATH_AX] == 0.0;
+    r->v_mach = c.v >= v_need ? v_need : straight ? c.v : quantize(c.v);
     r->a = straight ? c.a : quantize(c.a);
     r->a_rest = fmax(r->a, straight ? c.a_rest : quantize(c.a_rest));
     r->j = straight ? c.j : quantize(c.j);
