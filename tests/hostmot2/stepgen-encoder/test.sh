@@ -4,7 +4,8 @@
 # mode runs at the commanded rate (LinuxCNC's rate register value), encoders count what the pins emitted.
 . ../lib.sh
 
-# velocity and velocity-rpm of encoder 1 from one snapshot.
+# velocity and velocity-rpm of encoder 1 from one snapshot (halcmd reads the two pins one after
+# the other while the servo thread runs, so a snapshot that straddles an update is taken again).
 rpm_is_60_velocity() {
     halcmd show pin $BOARD.encoder.01.velocity | awk '
         $NF ~ /velocity$/ { v = $(NF - 1) } $NF ~ /velocity-rpm$/ { r = $(NF - 1) }
@@ -48,7 +49,7 @@ halcmd setp $B.stepgen.01.velocity-cmd 2.5
 halcmd setp $B.encoder.01.scale 400
 wait_until "encoder 1 measures 2.5 units/s" pin_near $B.encoder.01.velocity 2.5 0.1
 check "velocity-fb is the command" pin_near $B.stepgen.01.velocity-fb 2.5 1e-9
-check "velocity-rpm is 60 x velocity" rpm_is_60_velocity
+wait_until "velocity-rpm is 60 x velocity" rpm_is_60_velocity
 check "encoder 1 and stepgen 1 agree" pins_near "$B.*.01.position*" $B.encoder.01.position \
     $B.stepgen.01.position-fb 0.02
 halcmd setp $B.stepgen.01.velocity-cmd -2.5
