@@ -43,7 +43,7 @@ static void quintic_thirds(const tp_jet_t *a, const tp_jet_t *b, double lam, tp_
  * which the quintic already follows). */
 static double ramp_weight(double ka, double kb, double kp, double sa, double sb)
 {
-    if (!(sa > 0.0 && sb < 0.0))
+    if (!(sa > 0.0 && sb < 0.0) || !(kp > 0.0))
         return 0.0;
     double apex = fabs(sa - sb) / (fabs(sa) + fabs(sb));
     return apex * fmax(0.0, 1.0 - 0.5 * (fabs(ka) + fabs(kb)) / kp);

@@ -138,6 +138,8 @@ static void bez_diff(const tp_vec_t *c, int n, tp_vec_t *out)
             out[k].x[i] = n * (c[k + 1].x[i] - c[k].x[i]);
 }
 
+_Static_assert(TP_BEZ_DEG == 7, "septic_power's binomials and tp_septic_hermite are of degree 7");
+
 /* Power-basis coefficients from the control points (for Horner evaluation): c_k = C(n, k)
  * times the k-th forward difference of the control points at 0. */
 static void septic_power(tp_septic_t *q)

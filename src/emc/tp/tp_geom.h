@@ -30,9 +30,9 @@ typedef struct tp_arc {
     double h;                   /* displacement along the normal */
 } tp_arc_t;
 
-/* Degree-7 (septic) Bezier blend: u = s / len in [0, 1]; c holds the same polynomial in powers of u. */
-#define TP_BEZ_DEG 7
+#define TP_BEZ_DEG 7               /* degree of the blend polynomials */
 
+/* Degree-7 (septic) Bezier blend: u = s / len in [0, 1]; c holds the same polynomial in powers of u. */
 typedef struct tp_septic {
     tp_vec_t b[TP_BEZ_DEG + 1];
     tp_vec_t c[TP_BEZ_DEG + 1];
