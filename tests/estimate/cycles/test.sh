@@ -2,7 +2,7 @@
 # openemc-estimate gives the same servo-cycle count as a real linuxcnc -r run whose queue is filled
 # before motion starts (it never starves): cut.ngc on the trapezoid planner (test.ini) and
 # corners.ngc on the jerk-limited one (jerk.ini, made from test.ini here); spindle.ngc: the feed
-# move after M3 waits for the spindle at speed, so the rapid into it stops.
+# move after M3 waits for the spindle at speed, so the rapid into it stops; features.ngc on both.
 . "$EMC2_HOME/tests/task/lib/run-machine.sh"
 sed -e '/^\[TRAJ\]/a PLANNER_TYPE = 1\nMAX_LINEAR_JERK = 100000' \
     -e '/^\[\(AXIS\|JOINT\)_/a MAX_JERK = 100000' test.ini > jerk.ini
@@ -21,3 +21,5 @@ compare() {
 compare test.ini cut.ngc
 compare jerk.ini corners.ngc
 compare test.ini spindle.ngc
+compare test.ini features.ngc
+compare jerk.ini features.ngc
