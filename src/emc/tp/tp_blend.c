@@ -49,20 +49,36 @@ static double ramp_weight(double ka, double kb, double kp, double sa, double sb)
     return apex * fmax(0.0, 1.0 - 0.5 * (fabs(ka) + fabs(kb)) / kp);
 }
 
+/* The turn between a blend's end data: its angle, the directions towards it at both ends and the
+ * end curvatures in them (what the ramp needs that does not depend on the blend's scale). */
+typedef struct blend_turn {
+    double th, ka, kb;
+    tp_vec_t wa, wb;
+} blend_turn_t;
+
+/* Describe the turn from a's end data to b's. */
+static void turn_of(const tp_jet_t *a, const tp_jet_t *b, blend_turn_t *t)
+{
+    double na = sqrt(tp_vec_dot(&a->d1, &a->d1)), nb = sqrt(tp_vec_dot(&b->d1, &b->d1));
+    double cs = na > 0.0 && nb > 0.0 ? tp_vec_dot(&a->d1, &b->d1) / (na * nb) : 1.0;
+    t->th = acos(fmax(-1.0, fmin(1.0, cs)));
+    t->wa = perp_unit(&b->d1, &a->d1);
+    t->wb = perp_unit(&a->d1, &b->d1);
+    t->ka = tp_vec_dot(&a->d2, &t->wa);
+    t->kb = -tp_vec_dot(&b->d2, &t->wb);
+}
+
 /* Third derivatives at the blend's ends.  A corner's curvature best runs up to a peak in the
  * middle and down again, a triangle of the turn's area (the clothoid pair turns with the least
  * curvature change); the ends take TP_BLEND_RAMP of its slope (the polynomial cannot follow
  * the apex; the full slope overshoots it), weighed against the quintic's by ramp_weight. */
-static void end_thirds(const tp_jet_t *a, const tp_jet_t *b, double lam, tp_vec_t *a3, tp_vec_t *b3)
+static void end_thirds(const tp_jet_t *a, const tp_jet_t *b, const blend_turn_t *t, double lam,
+                       tp_vec_t *a3, tp_vec_t *b3)
 {
-    double na = sqrt(tp_vec_dot(&a->d1, &a->d1)), nb = sqrt(tp_vec_dot(&b->d1, &b->d1));
-    double cs = na > 0.0 && nb > 0.0 ? tp_vec_dot(&a->d1, &b->d1) / (na * nb) : 1.0;
-    double th = acos(fmax(-1.0, fmin(1.0, cs))), d = 0.5 * lam;
-    tp_vec_t wa = perp_unit(&b->d1, &a->d1), wb = perp_unit(&a->d1, &b->d1);
-    double ka = tp_vec_dot(&a->d2, &wa), kb = -tp_vec_dot(&b->d2, &wb);
-    double kp = th / d - 0.5 * (ka + kb), sa = (kp - ka) / d, sb = (kb - kp) / d;
+    double d = 0.5 * lam, ka = t->ka, kb = t->kb;
+    double kp = t->th / d - 0.5 * (ka + kb), sa = (kp - ka) / d, sb = (kb - kp) / d;
     double w = ramp_weight(ka, kb, kp, sa, sb);
-    tp_vec_t ra = tp_vec_scale(&wa, TP_BLEND_RAMP * sa), rb = tp_vec_scale(&wb, -TP_BLEND_RAMP * sb);
+    tp_vec_t ra = tp_vec_scale(&t->wa, TP_BLEND_RAMP * sa), rb = tp_vec_scale(&t->wb, -TP_BLEND_RAMP * sb);
     ra = tp_vec_axpy(&ra, -tp_vec_dot(&a->d2, &a->d2), &a->d1);
     rb = tp_vec_axpy(&rb, -tp_vec_dot(&b->d2, &b->d2), &b->d1);
     quintic_thirds(a, b, lam, a3, b3);
@@ -80,9 +96,11 @@ static int build_septic(tp_septic_t *q, const tp_jet_t *a, const tp_jet_t *b, tp
     double lam = tp_vec_metric_norm(&chord, m);
     if (!(lam > 1e-12))
         return -1;
+    blend_turn_t turn;
+    turn_of(a, b, &turn);
     for (int k = 0; k < TP_BLEND_LAM_ITER; k++) {
         tp_vec_t a3, b3;
-        end_thirds(a, b, lam, &a3, &b3);
+        end_thirds(a, b, &turn, lam, &a3, &b3);
         tp_septic_hermite(q, a, b, lam, &a3, &b3);
         double len = tp_septic_length(q, m);
         if (!(len > 0.0) || !isfinite(len) || len > lam_max)
@@ -93,7 +111,7 @@ static int build_septic(tp_septic_t *q, const tp_jet_t *a, const tp_jet_t *b, tp
             break;
     }
     tp_vec_t a3, b3;
-    end_thirds(a, b, lam, &a3, &b3);
+    end_thirds(a, b, &turn, lam, &a3, &b3);
     tp_septic_hermite(q, a, b, lam, &a3, &b3);
     *lam_out = lam;
     return 0;
